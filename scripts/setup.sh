@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Installs every dependency SwarmDesign needs from Debian's archive, then configures and
+# builds it in ./build. Safe to run again: apt-get and CMake skip what is already done.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(
+  build-essential cmake ninja-build pkg-config git
+  libcli11-dev nlohmann-json3-dev libsqlite3-dev libsodium-dev libboost-dev r-cran-irace
+  libgtest-dev libgmock-dev libbenchmark-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  sudo=""
+  if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+  echo "setup: installing ${missing[*]}"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+build_type="${SWARMDESIGN_BUILD_TYPE:-Release}"
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE="$build_type" -DSWARMDESIGN_WERROR="${CI:+ON}"
+cmake --build build -j "$(nproc)"

@@ -1,0 +1,36 @@
+#pragma once
+// Every group of subcommands lives in its own file and registers itself here, so adding a
+// command never touches main.cpp.
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace sd::cli {
+
+/// What main() hands every command: the control software cut off the command line
+/// (everything from --fsm-config / --bt-config to the end, as automode_main does).
+struct Context {
+  std::vector<std::string> control_software;
+  bool has_control_software() const { return !control_software.empty(); }
+};
+
+/// Misuse of the command line: exit status 2.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+using Registration = std::function<void(CLI::App& app, Context& context)>;
+
+/// Registers a group of subcommands; `order` sorts the groups in --help.
+struct CommandRegistrar {
+  CommandRegistrar(int order, Registration registration);
+};
+
+void register_all_commands(CLI::App& app, Context& context);
+
+}  // namespace sd::cli

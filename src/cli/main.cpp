@@ -1,0 +1,83 @@
+// swarmdesign: one executable, subcommands registered by the files beside this one.
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "cli/command_registry.hpp"
+
+namespace sd::cli {
+
+namespace {
+std::multimap<int, Registration>& registry() {
+  static std::multimap<int, Registration> r;
+  return r;
+}
+}  // namespace
+
+CommandRegistrar::CommandRegistrar(int order, Registration registration) {
+  registry().emplace(order, std::move(registration));
+}
+
+void register_all_commands(CLI::App& app, Context& context) {
+  for (auto& [order, registration] : registry()) registration(app, context);
+}
+
+}  // namespace sd::cli
+
+namespace {
+
+void print_error(const std::string& message) {
+  std::string line = message;
+  std::replace(line.begin(), line.end(), '\n', ' ');
+  std::cerr << "swarmdesign: error: " << line << '\n';
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  sd::cli::Context context;
+  std::vector<std::string> args;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--fsm-config" || arg == "--bt-config") {
+      context.control_software.assign(argv + i, argv + argc);
+      break;
+    }
+    args.push_back(arg);
+  }
+
+  CLI::App app{"SwarmDesign: automatic modular design of robot swarms.\n"
+               "Control software (--fsm-config ... / --bt-config ...) goes last on the command line.",
+               "swarmdesign"};
+  app.require_subcommand(1);
+  app.fallthrough(false);
+  sd::cli::register_all_commands(app, context);
+
+  try {
+    std::reverse(args.begin(), args.end());  // CLI11 takes the arguments reversed
+    app.parse(args);
+    return 0;
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::RuntimeError& e) {
+    return e.get_exit_code();
+  } catch (const CLI::ParseError& e) {
+    print_error(std::string(e.what()) + " (see --help)");
+    return 2;
+  } catch (const sd::cli::UsageError& e) {
+    print_error(e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    print_error(e.what());
+    return 1;
+  }
+}
