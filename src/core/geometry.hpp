@@ -20,7 +20,7 @@ struct Vec2 {
   constexpr Vec2& operator-=(Vec2 o) { x -= o.x; y -= o.y; return *this; }
   constexpr bool operator==(const Vec2&) const = default;
 
-  double length() const { return std::hypot(x, y); }
+  double length() const { return std::sqrt(x * x + y * y); }  // not hypot: 10x slower, and no overflow here
   constexpr double squared_length() const { return x * x + y * y; }
   /// atan2(y, x); the angle of the zero vector is 0 as in ARGoS.
   double angle() const { return std::atan2(y, x); }
@@ -38,6 +38,9 @@ struct Vec3 {
 
 /// Maps an angle into (-pi, pi] (ARGoS SignedNormalize).
 inline double wrap_signed(double a) {
+  if (a <= kPi && a > -kPi) return a;  // the common case, without fmod
+  if (a > kPi && a <= 3.0 * kPi) return a - kTwoPi;
+  if (a <= -kPi && a > -3.0 * kPi) return a + kTwoPi;
   a = std::fmod(a, kTwoPi);
   if (a > kPi) a -= kTwoPi;
   else if (a <= -kPi) a += kTwoPi;

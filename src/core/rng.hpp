@@ -21,6 +21,7 @@ class Rng {
     std::uint64_t x = seed;
     for (auto& s : state_) s = splitmix64(x);
     has_spare_normal_ = false;
+    coarse_left_ = 0;
   }
 
   std::uint64_t next() {
@@ -39,6 +40,19 @@ class Rng {
   double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
   /// Uniform in [a, b).
   double uniform(double a, double b) { return a + (b - a) * uniform(); }
+
+  /// Uniform in [a, b) with 21 random bits: three per 64-bit draw. For sensor noise, where
+  /// a resolution of 5e-7 of the noise interval is far below anything a controller sees.
+  double coarse_uniform(double a, double b) {
+    if (coarse_left_ == 0) {
+      coarse_bits_ = next();
+      coarse_left_ = 3;
+    }
+    const auto chunk = static_cast<double>(coarse_bits_ & 0x1fffff);
+    coarse_bits_ >>= 21;
+    --coarse_left_;
+    return a + (b - a) * (chunk * 0x1.0p-21);
+  }
   /// Integer uniform in [a, b) as ARGoS' Uniform(CRange<UInt32>(a, b)); returns a when b <= a.
   std::uint32_t uniform_int(std::uint32_t a, std::uint32_t b) {
     if (b <= a) return a;
@@ -46,7 +60,7 @@ class Rng {
   }
   /// Integer uniform in [0, n) for shuffling; n > 0.
   std::uint32_t below(std::uint32_t n) {
-    return static_cast<std::uint32_t>((static_cast<unsigned __int128>(next() >> 32) * n) >> 32);
+    return static_cast<std::uint32_t>(((next() >> 32) * n) >> 32);  // Lemire, bias < 2^-32
   }
   bool bernoulli(double p) { return uniform() < p; }
 
@@ -73,12 +87,18 @@ class Rng {
     std::uint64_t s[4];
     bool has_spare;
     double spare;
+    std::uint64_t coarse_bits;
+    int coarse_left;
   };
-  State state() const { return {{state_[0], state_[1], state_[2], state_[3]}, has_spare_normal_, spare_normal_}; }
+  State state() const {
+    return {{state_[0], state_[1], state_[2], state_[3]}, has_spare_normal_, spare_normal_, coarse_bits_, coarse_left_};
+  }
   void set_state(const State& st) {
     for (int i = 0; i < 4; ++i) state_[i] = st.s[i];
     has_spare_normal_ = st.has_spare;
     spare_normal_ = st.spare;
+    coarse_bits_ = st.coarse_bits;
+    coarse_left_ = st.coarse_left;
   }
 
  private:
@@ -93,6 +113,8 @@ class Rng {
   std::uint64_t state_[4];
   bool has_spare_normal_ = false;
   double spare_normal_ = 0.0;
+  std::uint64_t coarse_bits_ = 0;
+  int coarse_left_ = 0;
 };
 
 }  // namespace sd

@@ -1,0 +1,156 @@
+#include "simulator/arena.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace sd {
+
+namespace {
+
+double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = ab.squared_length();
+  const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return (p - (a + ab * t)).length();
+}
+
+template <typename Predicate>
+CellLists build_lists(std::size_t cells, std::size_t wall_count, Predicate&& keep) {
+  CellLists lists;
+  lists.offsets.reserve(cells + 1);
+  lists.offsets.push_back(0);
+  for (std::size_t c = 0; c < cells; ++c) {
+    for (std::size_t w = 0; w < wall_count; ++w)
+      if (keep(c, w)) lists.items.push_back(static_cast<std::uint16_t>(w));
+    lists.offsets.push_back(static_cast<std::uint32_t>(lists.items.size()));
+  }
+  return lists;
+}
+
+}  // namespace
+
+double Wall::bounding_radius() const { return std::hypot(half_length, half_thickness); }
+
+double Wall::distance(Vec2 p, Vec2* outward_normal) const {
+  const Vec2 d = p - center;
+  const Vec2 n = normal();
+  const double lx = dot(d, axis), ly = dot(d, n);
+  const double qx = std::clamp(lx, -half_length, half_length), qy = std::clamp(ly, -half_thickness, half_thickness);
+  const double ex = lx - qx, ey = ly - qy;
+  const double dist = std::sqrt(ex * ex + ey * ey);
+  if (dist > 0.0) {
+    if (outward_normal) *outward_normal = (axis * ex + n * ey) * (1.0 / dist);
+    return dist;
+  }
+  // Inside the box: leave through the thin side.
+  if (outward_normal) *outward_normal = ly >= 0.0 ? n : -n;
+  return -(half_thickness - std::abs(ly));
+}
+
+double Wall::segment_entry(Vec2 a, Vec2 b) const {
+  const Vec2 n = normal();
+  const Vec2 da = a - center, db = b - center;
+  const double la[2] = {dot(da, axis), dot(da, n)};
+  const double lb[2] = {dot(db, axis), dot(db, n)};
+  const double half[2] = {half_length, half_thickness};
+  double t0 = 0.0, t1 = 1.0;
+  for (int k = 0; k < 2; ++k) {
+    const double d = lb[k] - la[k];
+    if (std::abs(d) < 1e-15) {
+      if (std::abs(la[k]) > half[k]) return 2.0;
+      continue;
+    }
+    double ta = (-half[k] - la[k]) / d, tb = (half[k] - la[k]) / d;
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+    if (t0 > t1) return 2.0;
+  }
+  return t0;
+}
+
+double ArenaModel::light_clearance_fraction(std::size_t light, double height) const {
+  const double z = lights[light].position.z;
+  return z > height ? height / z : 1.0;
+}
+
+std::size_t ArenaModel::cell_of(Vec2 p) const {
+  const double fx = (p.x - grid_origin_.x) / cell_size_, fy = (p.y - grid_origin_.y) / cell_size_;
+  if (!(fx >= 0.0 && fy >= 0.0)) return kOutside;
+  const auto cx = static_cast<std::size_t>(fx), cy = static_cast<std::size_t>(fy);
+  if (cx >= grid_w_ || cy >= grid_h_) return kOutside;
+  return cy * grid_w_ + cx;
+}
+
+bool ArenaModel::line_of_sight_walls(Vec2 p, Vec2 q) const {
+  for (const std::uint16_t w : interior_walls_)
+    if (walls[w].segment_entry(p, q) <= 1.0) return false;
+  return true;
+}
+
+void ArenaModel::compile() {
+  all_walls_.clear();
+  interior_walls_.clear();
+  for (std::size_t w = 0; w < walls.size(); ++w) all_walls_.push_back(static_cast<std::uint16_t>(w));
+
+  // A wall that has every other wall on its inner side encloses the swarm: robots start
+  // inside and contacts keep them there, so no robot-to-robot segment can cross it.
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    const Wall& wall = walls[w];
+    const Vec2 n = wall.normal();
+    int side = 0;
+    bool encloses = walls.size() >= 3;
+    for (std::size_t o = 0; o < walls.size() && encloses; ++o) {
+      if (o == w) continue;
+      const Wall& other = walls[o];
+      for (const double sa : {-1.0, 1.0})
+        for (const double sb : {-1.0, 1.0}) {
+          const Vec2 corner = other.center + other.axis * (sa * other.half_length) + other.normal() * (sb * other.half_thickness);
+          const double s = dot(corner - wall.center, n);
+          if (std::abs(s) <= wall.half_thickness + 1e-6) continue;
+          const int this_side = s > 0.0 ? 1 : -1;
+          if (side == 0) side = this_side;
+          else if (side != this_side) encloses = false;
+        }
+    }
+    if (!encloses) interior_walls_.push_back(static_cast<std::uint16_t>(w));
+  }
+
+  // Grid over the walls' bounds with a margin, for the per-tick wall look-ups.
+  Vec2 lo{-0.5, -0.5}, hi{0.5, 0.5};
+  for (const Wall& wall : walls) {
+    const double r = wall.bounding_radius();
+    lo = {std::min(lo.x, wall.center.x - r), std::min(lo.y, wall.center.y - r)};
+    hi = {std::max(hi.x, wall.center.x + r), std::max(hi.y, wall.center.y + r)};
+  }
+  const double margin = 0.3;
+  grid_origin_ = lo - Vec2{margin, margin};
+  grid_w_ = static_cast<std::size_t>(std::ceil((hi.x - lo.x + 2 * margin) / cell_size_));
+  grid_h_ = static_cast<std::size_t>(std::ceil((hi.y - lo.y + 2 * margin) / cell_size_));
+  const std::size_t cells = grid_w_ * grid_h_;
+  const double half_diagonal = cell_size_ * std::sqrt(0.5);
+  auto cell_center = [&](std::size_t c) {
+    return grid_origin_ + Vec2{(static_cast<double>(c % grid_w_) + 0.5) * cell_size_,
+                               (static_cast<double>(c / grid_w_) + 0.5) * cell_size_};
+  };
+
+  near_ = build_lists(cells, walls.size(), [&](std::size_t c, std::size_t w) {
+    return walls[w].distance(cell_center(c), nullptr) <= kWallReach + half_diagonal;
+  });
+
+  // A ray rising from p towards a light clears a wall of height H after the fraction
+  // H / z of the way; for every p in a cell those truncated rays lie within the cell's
+  // half-diagonal of the ray from the cell's centre.
+  shading_.clear();
+  for (std::size_t l = 0; l < lights.size(); ++l) {
+    const Vec2 target = lights[l].position.xy();
+    shading_.push_back(build_lists(cells, walls.size(), [&](std::size_t c, std::size_t w) {
+      const Vec2 p = cell_center(c);
+      const double t = light_clearance_fraction(l, walls[w].height);
+      return distance_to_segment(walls[w].center, p, p + (target - p) * t) <= half_diagonal + walls[w].bounding_radius();
+    }));
+  }
+}
+
+}  // namespace sd

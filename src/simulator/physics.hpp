@@ -1,0 +1,51 @@
+#pragma once
+// One tick of rigid-body motion (robot-and-simulator.md §2), written for a swarm of
+// identical discs among static box walls.
+//
+// What we keep from ARGoS/dynamics2d: the drive sets, once per tick, a target velocity along
+// the heading at the START of the tick (so motion within a tick is a chord, not an arc) and
+// a target angular velocity; 10 sub-steps of 0.01 s; the drive joint's 1.5 N force limit on
+// a 0.4 kg body (so a robot needs ~3 sub-steps to reach 12 cm/s and slides a little when it
+// turns); inelastic contacts with Coulomb friction 0.49 robot-robot and 0.07 robot-wall.
+//
+// What we simplify, and why: contacts are solved as speculative velocity constraints
+// (sequential impulses on linear velocity only) instead of Chipmunk's post-penetration
+// arbiters. Robots then touch at exactly 2r where dynamics2d lets them sink a few tenths of
+// a millimetre, and overlap can never grow. The drive's angular joint is treated as
+// infinitely stiff (its limit, 1530 rad/s^2, is reached within one sub-step at e-puck
+// speeds) and friction torque is ignored, which only matters for a robot spinning while it
+// touches another.
+#include <vector>
+
+#include "simulator/arena.hpp"
+#include "simulator/swarm.hpp"
+
+namespace sd {
+
+class Physics {
+ public:
+  void reset(int robots);
+  /// Moves the swarm by one tick with the wheel speeds stored in `swarm`.
+  void step(const ArenaModel& arena, SwarmState& swarm);
+
+ private:
+  struct Candidate {
+    std::uint16_t a, b;  // robots, or robot and wall
+  };
+  /// A contact that may act during this sub-step; geometry is fixed while velocities are solved.
+  struct Contact {
+    std::uint16_t a, b;
+    Vec2 normal;           // robot pair: from a to b; wall: from the wall to robot a
+    double allowed;        // lowest admissible normal velocity (closing the gap, not more)
+    double normal_impulse, tangent_impulse;
+  };
+  void solve_contacts(const ArenaModel& arena, SwarmState& swarm, double max_speed);
+  void separate_overlaps(const ArenaModel& arena, SwarmState& swarm);
+
+  std::vector<Vec2> target_velocity_;
+  std::vector<double> target_angular_;
+  std::vector<Candidate> pair_candidates_, wall_candidates_;
+  std::vector<Contact> pair_contacts_, wall_contacts_;
+};
+
+}  // namespace sd

@@ -1,0 +1,216 @@
+#include "simulator/sensors.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "simulator/epuck.hpp"
+
+namespace sd {
+
+namespace {
+
+constexpr double kRadius = epuck::kBodyRadius;
+
+double clamp01(double v) { return v < 0.0 ? 0.0 : (v > 1.0 ? 1.0 : v); }
+
+double with_uniform_noise(double v, double level, Rng& rng) {
+  return clamp01(v + rng.coarse_uniform(-level, level));
+}
+
+struct RayDirections {
+  std::array<double, 8> cos{}, sin{};
+  RayDirections() {
+    for (int k = 0; k < 8; ++k) {
+      const double a = degrees_to_radians(epuck::kProximityFirstRayDegrees + 45.0 * k);
+      cos[k] = std::cos(a);
+      sin[k] = std::sin(a);
+    }
+  }
+};
+const RayDirections kRays;
+
+/// True if the segment a->b passes within `radius` of c.
+bool segment_hits_disc(Vec2 a, Vec2 b, Vec2 c, double radius) {
+  if (c.x < std::min(a.x, b.x) - radius || c.x > std::max(a.x, b.x) + radius || c.y < std::min(a.y, b.y) - radius ||
+      c.y > std::max(a.y, b.y) + radius)
+    return false;
+  const Vec2 ab = b - a;
+  const double len2 = ab.squared_length();
+  double t = len2 > 0.0 ? dot(c - a, ab) / len2 : 0.0;
+  t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+  return (a + ab * t - c).squared_length() < radius * radius;
+}
+
+}  // namespace
+
+double ray_disc_entry(Vec2 origin, Vec2 direction, Vec2 center, double radius) {
+  const Vec2 oc = origin - center;
+  const double b = dot(oc, direction);
+  const double c = oc.squared_length() - radius * radius;
+  if (c <= 0.0) return 0.0;
+  const double disc = b * b - c;
+  if (disc < 0.0 || b > 0.0) return -1.0;
+  return -b - std::sqrt(disc);
+}
+
+void update_pairs(SwarmState& swarm, double neighbour_range) {
+  const double range_sq = neighbour_range * neighbour_range;
+  const std::size_t stride = swarm.rab_stride();
+  std::fill(swarm.neighbour_count.begin(), swarm.neighbour_count.end(), 0);
+  for (RobotPair& pair : swarm.pairs) {
+    pair.delta = swarm.position[pair.b] - swarm.position[pair.a];
+    pair.distance_sq = pair.delta.squared_length();
+    if (pair.distance_sq < range_sq) {
+      swarm.neighbours[pair.a * stride + swarm.neighbour_count[pair.a]++] = {pair.b, pair.delta, pair.distance_sq};
+      swarm.neighbours[pair.b * stride + swarm.neighbour_count[pair.b]++] = {pair.a, -pair.delta, pair.distance_sq};
+    }
+  }
+}
+
+void sense_proximity(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng) {
+  const int n = swarm.size;
+  constexpr double kReach = epuck::kProximityRingRadius + epuck::kProximityRange + kRadius;
+  // Robots close enough to be seen: at most 6 discs fit around one within reach... keep 16.
+  std::array<std::uint16_t, 16> close{};
+  for (int i = 0; i < n; ++i) {
+    std::array<double, 8>& reading = swarm.proximity[i];
+    reading.fill(0.0);
+    int close_count = 0;
+    for (const auto& nb : swarm.neighbours_of(i))
+      if (nb.distance_sq < kReach * kReach && close_count < 16) close[close_count++] = nb.other;
+    const Vec2 p = swarm.position[i];
+    const auto walls = arena.walls_near(p);
+    if (close_count > 0 || !walls.empty()) {
+      const double c = swarm.heading[i].x, s = swarm.heading[i].y;
+      for (int k = 0; k < 8; ++k) {
+        const Vec2 dir{c * kRays.cos[k] - s * kRays.sin[k], s * kRays.cos[k] + c * kRays.sin[k]};
+        const Vec2 origin = p + dir * epuck::kProximityRingRadius;
+        double best = epuck::kProximityRange + 1.0;
+        for (int m = 0; m < close_count; ++m) {
+          const double t = ray_disc_entry(origin, dir, swarm.position[close[m]], kRadius);
+          if (t >= 0.0 && t < best) best = t;
+        }
+        const Vec2 end = origin + dir * epuck::kProximityRange;
+        for (const std::uint16_t w : walls) {
+          const double t = arena.walls[w].segment_entry(origin, end);
+          if (t <= 1.0) best = std::min(best, t * epuck::kProximityRange);
+        }
+        reading[k] = epuck::proximity_reading(best);
+      }
+    }
+    for (double& v : reading) v = with_uniform_noise(v, model.proximity_noise, rng);
+  }
+}
+
+void sense_light(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng) {
+  const int n = swarm.size;
+  const double neighbour_range_sq = neighbour_range(model) * neighbour_range(model);
+  for (int i = 0; i < n; ++i) {
+    std::array<double, 8>& reading = swarm.light[i];
+    reading.fill(0.0);
+    const Vec2 p = swarm.position[i];
+    for (std::size_t l = 0; l < arena.lights.size(); ++l) {
+      const Light& light = arena.lights[l];
+      if (light.intensity <= 0.0) continue;
+      const Vec2 to_light = light.position.xy() - p;
+      // Occlusion: the ray rises from the robot's ground point to the light; a body of
+      // height H blocks it only within the first H / z of the way.
+      bool occluded = false;
+      for (const std::uint16_t w : arena.walls_shading(l, p)) {
+        const double t = arena.light_clearance_fraction(l, arena.walls[w].height);
+        if (arena.walls[w].segment_entry(p, p + to_light * t) <= 1.0) {
+          occluded = true;
+          break;
+        }
+      }
+      if (!occluded) {
+        const double reach = to_light.length() * arena.light_clearance_fraction(l, epuck::kBodyHeight);
+        const double reach_sq = (reach + kRadius) * (reach + kRadius);
+        const Vec2 dir = to_light * (1.0 / to_light.length());
+        auto blocks = [&](Vec2 center) {
+          const double t = ray_disc_entry(p, dir, center, kRadius);
+          return t >= 0.0 && t <= reach;
+        };
+        if (reach_sq < neighbour_range_sq) {
+          for (const auto& nb : swarm.neighbours_of(i))
+            if (nb.distance_sq < reach_sq && blocks(swarm.position[nb.other])) {
+              occluded = true;
+              break;
+            }
+        } else {
+          for (int j = 0; j < n && !occluded; ++j) occluded = j != i && blocks(swarm.position[j]);
+        }
+      }
+      if (occluded) continue;
+      const double dz = light.position.z;
+      const double distance = std::sqrt(to_light.squared_length() + dz * dz) / light.intensity;
+      if (distance > 2.5) continue;
+      const double base = std::exp(-2.0 * distance);
+      const double bearing = to_light.angle() - swarm.yaw[i];
+      for (int k = 0; k < 8; ++k) {
+        const double delta = std::abs(wrap_signed(bearing - epuck::kSensorAngles[k]));
+        if (delta < kPi / 2.0) reading[k] += base * (1.0 - 2.0 * delta / kPi);
+      }
+    }
+    for (double& v : reading) v = with_uniform_noise(v, model.light_noise, rng);
+  }
+}
+
+void sense_ground(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng) {
+  for (int i = 0; i < swarm.size; ++i) {
+    const double c = swarm.heading[i].x, s = swarm.heading[i].y;
+    for (int k = 0; k < 3; ++k) {
+      const Vec2 o = epuck::kGroundSensorOffsets[k];
+      const Vec2 point = swarm.position[i] + Vec2{c * o.x - s * o.y, s * o.x + c * o.y};
+      swarm.ground[i][k] = with_uniform_noise(arena.floor_gray(point), model.ground_noise, rng);
+    }
+  }
+}
+
+void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng) {
+  const int n = swarm.size;
+  std::fill(swarm.rab_count.begin(), swarm.rab_count.end(), 0);
+  const std::size_t stride = swarm.rab_stride();
+  const double range_sq = model.rab_range * model.rab_range;
+  for (const RobotPair& pair : swarm.pairs) {
+    if (pair.distance_sq >= range_sq) continue;
+    // Loss is drawn first: line of sight is only worth computing for the 15 % of packets
+    // that survive, and the outcome is the same in distribution.
+    const bool a_receives = !rng.bernoulli(model.rab_loss);
+    const bool b_receives = !rng.bernoulli(model.rab_loss);
+    if (!a_receives && !b_receives) continue;
+    const Vec2 pa = swarm.position[pair.a], pb = swarm.position[pair.b];
+    // The RAB ray runs at 5.2 cm, below every body's top: any robot or wall on it blocks.
+    bool visible = arena.line_of_sight_walls(pa, pb);
+    for (int k = 0; k < n && visible; ++k) {
+      if (k == pair.a || k == pair.b) continue;
+      if (segment_hits_disc(pa, pb, swarm.position[k], kRadius)) visible = false;
+    }
+    if (!visible) continue;
+    const double distance = std::sqrt(pair.distance_sq);
+    const double range_cm = distance * 100.0 - epuck::kRabRangeOffsetCm;
+    const Vec2 u = pair.delta * (1.0 / distance);  // from a towards b, world frame
+    if (a_receives) {
+      const Vec2 h = swarm.heading[pair.a];
+      swarm.rab[pair.a * stride + swarm.rab_count[pair.a]++] = {range_cm, {h.x * u.x + h.y * u.y, h.x * u.y - h.y * u.x}, pair.b};
+    }
+    if (b_receives) {
+      const Vec2 h = swarm.heading[pair.b];
+      swarm.rab[pair.b * stride + swarm.rab_count[pair.b]++] = {range_cm, {-(h.x * u.x + h.y * u.y), -(h.x * u.y - h.y * u.x)}, pair.a};
+    }
+  }
+}
+
+double neighbour_range(const RobotModel& model) {
+  return std::max({model.rab_range, model.camera_range + kRadius, epuck::kProximityRingRadius + epuck::kProximityRange + kRadius});
+}
+
+void sense(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng, SensingOptions) {
+  update_pairs(swarm, neighbour_range(model));
+  sense_range_and_bearing(arena, model, swarm, rng);
+  sense_proximity(arena, model, swarm, rng);
+  sense_light(arena, model, swarm, rng);
+  sense_ground(arena, model, swarm, rng);
+}
+
+}  // namespace sd

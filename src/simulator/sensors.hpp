@@ -1,0 +1,33 @@
+#pragma once
+// Raw sensing of one tick (robot-and-simulator.md §3): proximity rays, light, ground,
+// range-and-bearing with line of sight and packet loss, and (when asked) the camera.
+// Reads poses, writes the sensor arrays of SwarmState; draws noise from the run's Rng.
+#include "core/rng.hpp"
+#include "simulator/arena.hpp"
+#include "simulator/robot_model.hpp"
+#include "simulator/swarm.hpp"
+
+namespace sd {
+
+struct SensingOptions {
+  bool camera = false;  // only controllers that use colour modules pay for it
+};
+
+/// Refreshes the pair table and the neighbour lists (call after physics, before sensing).
+void update_pairs(SwarmState& swarm, double neighbour_range);
+/// Neighbour lists cover every sensor's reach: RAB, camera, proximity.
+double neighbour_range(const RobotModel& model);
+
+void sense_proximity(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng);
+void sense_light(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng);
+void sense_ground(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng);
+void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng);
+
+/// All of the above, in a fixed order (the order of random draws is part of determinism).
+void sense(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng, SensingOptions options = {});
+
+/// Entry distance along a ray (origin, unit direction) into a disc, or a negative value if
+/// the ray misses it. An origin inside the disc gives 0.
+double ray_disc_entry(Vec2 origin, Vec2 direction, Vec2 center, double radius);
+
+}  // namespace sd

@@ -1,0 +1,30 @@
+#include "simulator/swarm.hpp"
+
+namespace sd {
+
+void SwarmState::resize(int robots) {
+  size = robots;
+  const auto n = static_cast<std::size_t>(robots);
+  position.assign(n, {});
+  yaw.assign(n, 0.0);
+  heading.assign(n, {1.0, 0.0});
+  velocity.assign(n, {});
+  wheel_left.assign(n, 0.0);
+  wheel_right.assign(n, 0.0);
+  led.assign(n, 0);
+  proximity.assign(n, {});
+  light.assign(n, {});
+  ground.assign(n, {});
+  rab.assign(n * rab_stride(), {});
+  rab_count.assign(n, 0);
+  blob_count.assign(n, 0);
+  neighbours.assign(n * rab_stride(), {});
+  neighbour_count.assign(n, 0);
+  pairs.clear();
+  pairs.reserve(n * (n - 1) / 2);
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = a + 1; b < n; ++b)
+      pairs.push_back({static_cast<std::uint16_t>(a), static_cast<std::uint16_t>(b), {}, 0.0});
+}
+
+}  // namespace sd

@@ -1,0 +1,78 @@
+#pragma once
+// Everything about the swarm that changes during a run (the "data" of the model/data
+// split): poses, velocities, wheel commands, LEDs and the raw sensor readings of the
+// current tick. Arrays are sized once per evaluation; a tick never allocates.
+#include <array>
+#include <span>
+#include <cstdint>
+#include <vector>
+
+#include "core/geometry.hpp"
+
+namespace sd {
+
+/// A range-and-bearing packet as the receiver sees it.
+struct RabPacket {
+  double range_cm;   // centre distance in cm minus 7 (ARGoS e-puck convention)
+  Vec2 direction;    // unit vector towards the sender, in the receiver's frame
+  std::uint16_t sender;
+  /// Bearing in (-pi, pi], as ARGoS reports it.
+  double bearing() const { return direction.angle(); }
+};
+
+/// A colour blob seen by the omnidirectional camera.
+struct CameraBlob {
+  std::uint32_t rgb;
+  double angle;        // in the robot's frame
+  double distance_cm;
+};
+
+/// One unordered pair of robots, refreshed every tick after physics.
+struct RobotPair {
+  std::uint16_t a, b;
+  Vec2 delta;          // position[b] - position[a]
+  double distance_sq;
+};
+
+struct SwarmState {
+  int size = 0;
+
+  std::vector<Vec2> position;
+  std::vector<double> yaw;
+  std::vector<Vec2> heading;                   // (cos yaw, sin yaw), refreshed after physics
+  std::vector<Vec2> velocity;                  // body velocity, world frame
+  std::vector<double> wheel_left, wheel_right; // m/s, applied during the next physics step
+  std::vector<std::uint32_t> led;              // RGB LEDs colour, 0 = off
+
+  // Raw sensor readings of this tick, in [0, 1].
+  std::vector<std::array<double, 8>> proximity;
+  std::vector<std::array<double, 8>> light;
+  std::vector<std::array<double, 3>> ground;   // left, centre, right
+  // Range-and-bearing packets received this tick: rab[i * (size - 1) + k], k < rab_count[i].
+  std::vector<RabPacket> rab;
+  std::vector<std::uint16_t> rab_count;
+  // Camera blobs this tick (only filled when a controller uses the camera).
+  std::vector<CameraBlob> blobs;
+  std::vector<std::uint16_t> blob_count;
+  int blobs_per_robot = 0;
+
+  std::vector<RobotPair> pairs;                // all i < j
+
+  /// Per robot, the other robots within kNeighbourRange this tick (built from the pairs):
+  /// neighbours[i * (size - 1) + k], k < neighbour_count[i].
+  struct Neighbour {
+    std::uint16_t other;
+    Vec2 delta;          // position[other] - position[i]
+    double distance_sq;
+  };
+  std::vector<Neighbour> neighbours;
+  std::vector<std::uint16_t> neighbour_count;
+  std::span<const Neighbour> neighbours_of(int robot) const {
+    return {neighbours.data() + static_cast<std::size_t>(robot) * rab_stride(), neighbour_count[static_cast<std::size_t>(robot)]};
+  }
+
+  void resize(int robots);
+  std::size_t rab_stride() const { return static_cast<std::size_t>(size > 1 ? size - 1 : 1); }
+};
+
+}  // namespace sd
