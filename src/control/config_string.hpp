@@ -1,0 +1,35 @@
+#pragma once
+// The configuration-string grammar shared with ARGoS3-AutoMoDe (modules-and-grammar.md §6):
+// parse `--fsm-config --nstates N --s0 B ...` into ControlSoftware and print it back.
+// Printing then parsing gives back the same control software, bit for bit.
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "control/control_software.hpp"
+
+namespace sd {
+
+/// A malformed configuration string; the message names the offending token.
+struct ConfigError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct ParseOptions {
+  /// Flavour of legacy strings whose module ids are all one digit (Chocolate by default).
+  Flavour legacy_flavour = Flavour::Chocolate;
+};
+
+ControlSoftware parse_control_software(std::span<const std::string> tokens, ParseOptions options = {});
+ControlSoftware parse_control_software(const std::string& text, ParseOptions options = {});
+
+/// Canonical configuration string with two-digit ids, starting with --fsm-config.
+std::string to_config_string(const ControlSoftware& software);
+
+/// Shortest text that reads back as exactly the same double.
+std::string format_number(double value);
+
+std::vector<std::string> split_tokens(const std::string& text);
+
+}  // namespace sd
