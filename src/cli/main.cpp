@@ -58,6 +58,15 @@ int main(int argc, char** argv) {
   app.fallthrough(false);
   sd::cli::register_all_commands(app, context);
 
+  if (!args.empty() && args.front().rfind("-", 0) != 0) {
+    bool known = false;
+    for (const CLI::App* sub : app.get_subcommands({}))
+      known = known || sub->check_name(args.front());
+    if (!known) {
+      print_error("unknown command '" + args.front() + "' (see swarmdesign --help)");
+      return 2;
+    }
+  }
   try {
     std::reverse(args.begin(), args.end());  // CLI11 takes the arguments reversed
     app.parse(args);

@@ -1,0 +1,49 @@
+#include "cli/control_software_input.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <fstream>
+#include <sstream>
+
+namespace sd::cli {
+
+void add_control_software_options(CLI::App& command, ControlSoftwareOptions& options) {
+  command.add_option("--config-file", options.config_file, "Read the control software from FILE instead of the command line");
+  command.add_option("--legacy-flavour", options.legacy_flavour,
+                     "Flavour of one-digit legacy strings: chocolate, tuttifrutti, maple (default chocolate)");
+}
+
+ControlSoftware read_control_software(const Context& context, const ControlSoftwareOptions& options) {
+  const auto flavour = flavour_from_name(options.legacy_flavour);
+  if (!flavour) throw UsageError("--legacy-flavour: unknown flavour '" + options.legacy_flavour + "'");
+  ParseOptions parse;
+  parse.legacy_flavour = *flavour;
+  if (!options.config_file.empty()) {
+    if (context.has_control_software()) throw UsageError("give the control software either inline or with --config-file, not both");
+    std::ifstream in(options.config_file);
+    if (!in) throw UsageError("--config-file: cannot read " + options.config_file);
+    std::stringstream text;
+    text << in.rdbuf();
+    return parse_control_software(text.str(), parse);
+  }
+  if (!context.has_control_software()) throw UsageError("no control software: end the command with --fsm-config ...");
+  return parse_control_software(std::span<const std::string>(context.control_software), parse);
+}
+
+std::vector<std::uint64_t> parse_seed_range(const std::string& text) {
+  auto number = [&](const std::string& s) -> std::uint64_t {
+    if (s.empty() || s.find_first_not_of("0123456789") != std::string::npos)
+      throw UsageError("--seeds '" + text + "': expected A-B with non-negative integers");
+    return std::stoull(s);
+  };
+  const auto dash = text.find('-');
+  if (dash == std::string::npos) return {number(text)};
+  const std::uint64_t a = number(text.substr(0, dash)), b = number(text.substr(dash + 1));
+  if (b < a) throw UsageError("--seeds '" + text + "': the range is empty");
+  if (b - a >= 1'000'000) throw UsageError("--seeds '" + text + "': at most 1,000,000 seeds");
+  std::vector<std::uint64_t> seeds;
+  for (std::uint64_t s = a; s <= b; ++s) seeds.push_back(s);
+  return seeds;
+}
+
+}  // namespace sd::cli

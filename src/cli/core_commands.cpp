@@ -1,0 +1,208 @@
+// Core commands, no account needed: missions, mission show, evaluate, show-config.
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <numeric>
+#include <unistd.h>
+
+#include "cli/command_registry.hpp"
+#include "cli/control_software_input.hpp"
+#include "control/describe.hpp"
+#include "evaluation/evaluator.hpp"
+#include "evaluation/simulation.hpp"
+#include "evaluation/trace_writer.hpp"
+#include "missions/catalogue.hpp"
+#include "missions/svg.hpp"
+
+namespace sd::cli {
+namespace {
+
+using nlohmann::json;
+
+Mission load_mission_or_usage(const std::string& name) {
+  try {
+    return load_mission(name);
+  } catch (const MissionError& e) {
+    throw UsageError(e.what());
+  }
+}
+
+void register_missions(CLI::App& app) {
+  auto* cmd = app.add_subcommand("missions", "List the missions (name, origin, robots, duration, objective direction)");
+  auto json_output = std::make_shared<bool>(false);
+  cmd->add_flag("--json", *json_output, "Print one JSON document");
+  cmd->footer("Example: swarmdesign missions --json");
+  cmd->callback([json_output] {
+    const auto missions = list_missions();
+    if (*json_output) {
+      json out = json::array();
+      for (const auto& m : missions)
+        out.push_back({{"name", m.name}, {"title", m.title}, {"origin", m.origin}, {"robots", m.robots},
+                       {"duration_s", m.duration_s}, {"direction", m.direction}, {"source", m.source}});
+      std::cout << out.dump(2) << "\n";
+      return;
+    }
+    std::printf("%-28s %-12s %6s %9s  %-9s %s\n", "NAME", "ORIGIN", "ROBOTS", "DURATION", "OBJECTIVE", "TITLE");
+    for (const auto& m : missions)
+      std::printf("%-28s %-12s %6d %8gs  %-9s %s\n", m.name.c_str(), m.origin.c_str(), m.robots, m.duration_s,
+                  m.direction.c_str(), m.title.c_str());
+  });
+}
+
+void register_mission_show(CLI::App& app) {
+  auto* mission = app.add_subcommand("mission", "Describe one mission");
+  mission->require_subcommand(1);
+  auto* show = mission->add_subcommand("show", "Describe a mission and optionally draw its arena as SVG");
+  struct Options {
+    std::string name, svg;
+    bool json = false;
+  };
+  auto o = std::make_shared<Options>();
+  show->add_option("name", o->name, "Mission name or mission file")->required();
+  show->add_option("--svg", o->svg, "Write a drawing of the arena to FILE");
+  show->add_flag("--json", o->json, "Print one JSON document");
+  show->footer("Example: swarmdesign mission show aac --svg aac.svg");
+  show->callback([o] {
+    const Mission m = load_mission_or_usage(o->name);
+    if (!o->svg.empty()) {
+      std::ofstream out(o->svg);
+      if (!out) throw std::runtime_error("cannot write " + o->svg);
+      out << mission_svg(m);
+    }
+    if (o->json) {
+      std::cout << json{{"name", m.name}, {"title", m.title}, {"origin", m.origin}, {"description", m.description},
+                        {"robots", m.robots}, {"duration_s", m.duration_s}, {"ticks", m.ticks},
+                        {"walls", m.arena.walls.size()}, {"floor_patches", m.arena.floor_patches.size()},
+                        {"lights", m.arena.lights.size()}, {"objective", m.objective.type},
+                        {"direction", direction_name(m.objective.direction)}, {"source", m.source}}
+                       .dump(2)
+                << "\n";
+      return;
+    }
+    std::cout << m.title << " (" << m.name << ", " << m.origin << ")\n";
+    if (!m.description.empty()) std::cout << "  " << m.description << "\n";
+    std::cout << "  robots: " << m.robots << ", duration: " << m.duration_s << " s (" << m.ticks << " ticks)\n"
+              << "  arena: " << m.arena.walls.size() << " walls, " << m.arena.floor_patches.size() << " floor patches, "
+              << m.arena.lights.size() << " light(s)\n"
+              << "  objective: " << m.objective.type << ", " << direction_name(m.objective.direction) << "\n"
+              << "  source: " << m.source << "\n";
+    if (!o->svg.empty()) std::cout << "  drawing written to " << o->svg << "\n";
+  });
+}
+
+double median_of(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+void register_evaluate(CLI::App& app, Context& context) {
+  auto* cmd = app.add_subcommand("evaluate", "Simulate control software on a mission and print its score per seed");
+  struct Options {
+    std::string mission, seeds, trace;
+    std::uint64_t seed = 1;
+    int threads = 0;
+    bool json = false;
+    ControlSoftwareOptions software;
+  };
+  auto o = std::make_shared<Options>();
+  cmd->add_option("--mission", o->mission, "Mission name or mission file")->required();
+  auto* seed = cmd->add_option("--seed", o->seed, "Seed of the run (default 1)");
+  cmd->add_option("--seeds", o->seeds, "Range of seeds A-B; also prints mean and median")->excludes(seed);
+  cmd->add_option("--threads", o->threads, "Worker threads for --seeds (default: all cores)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--trace", o->trace, "Write every tick's poses, LEDs and running objective to FILE (CSV)");
+  cmd->add_flag("--json", o->json, "Print one JSON document");
+  add_control_software_options(*cmd, o->software);
+  cmd->footer(
+      "The control software ends the command line.\n"
+      "Example: swarmdesign evaluate --mission aac --seeds 1-20 --fsm-config --nstates 1 --s0 10 --rwm0 50");
+  cmd->callback([o, &context] {
+    const Mission mission = load_mission_or_usage(o->mission);
+    ControlSoftware software;
+    try {
+      software = read_control_software(context, o->software);
+    } catch (const ConfigError& e) {
+      throw UsageError(e.what());
+    }
+    const std::vector<std::uint64_t> seeds = o->seeds.empty() ? std::vector<std::uint64_t>{o->seed} : parse_seed_range(o->seeds);
+    if (!o->trace.empty() && seeds.size() != 1) throw UsageError("--trace records one run: use it with --seed");
+
+    std::vector<double> scores(seeds.size());
+    if (!o->trace.empty()) {
+      std::ofstream out(o->trace);
+      if (!out) throw std::runtime_error("cannot write " + o->trace);
+      TraceWriter writer(out);
+      Simulation simulation(mission, software);
+      scores[0] = simulation.run(seeds[0], &writer);
+    } else {
+      ThreadedEvaluator evaluator(o->threads);
+      std::vector<EvaluationTask> tasks;
+      for (const auto s : seeds) tasks.push_back({&software, s});
+      const bool progress = seeds.size() > 1 && isatty(STDERR_FILENO) && !o->json;
+      // Batches keep a progress line alive without changing any score.
+      const std::size_t batch = progress ? static_cast<std::size_t>(std::max(1, evaluator.threads()) * 4) : tasks.size();
+      for (std::size_t start = 0; start < tasks.size(); start += batch) {
+        const std::size_t count = std::min(batch, tasks.size() - start);
+        evaluator.evaluate(mission, std::span(tasks).subspan(start, count), std::span(scores).subspan(start, count));
+        if (progress) std::fprintf(stderr, "\revaluated %zu/%zu seeds", start + count, tasks.size());
+      }
+      if (progress) std::fprintf(stderr, "\r\033[K");
+    }
+
+    const double mean = std::accumulate(scores.begin(), scores.end(), 0.0) / static_cast<double>(scores.size());
+    const double median = median_of(scores);
+    if (o->json) {
+      json runs = json::array();
+      for (std::size_t i = 0; i < seeds.size(); ++i) runs.push_back({{"seed", seeds[i]}, {"score", scores[i]}});
+      json out{{"mission", mission.name}, {"direction", direction_name(mission.objective.direction)},
+               {"control_software", to_config_string(software)}, {"runs", runs}};
+      if (seeds.size() > 1) {
+        out["mean"] = mean;
+        out["median"] = median;
+      }
+      std::cout << out.dump(2) << "\n";
+      return;
+    }
+    for (std::size_t i = 0; i < seeds.size(); ++i) std::cout << "Score " << format_number(scores[i]) << "\n";
+    if (seeds.size() > 1) std::cout << "Mean " << format_number(mean) << "\nMedian " << format_number(median) << "\n";
+  });
+}
+
+void register_show_config(CLI::App& app, Context& context) {
+  auto* cmd = app.add_subcommand("show-config", "Print control software readably, or as Graphviz DOT");
+  struct Options {
+    bool dot = false, canonical = false;
+    ControlSoftwareOptions software;
+  };
+  auto o = std::make_shared<Options>();
+  cmd->add_flag("--dot", o->dot, "Print Graphviz DOT");
+  cmd->add_flag("--canonical", o->canonical, "Print the canonical configuration string (two-digit ids)");
+  add_control_software_options(*cmd, o->software);
+  cmd->footer("Example: swarmdesign show-config --dot --fsm-config --nstates 1 --s0 10 --rwm0 50 | dot -Tpng > fsm.png");
+  cmd->callback([o, &context] {
+    ControlSoftware software;
+    try {
+      software = read_control_software(context, o->software);
+    } catch (const ConfigError& e) {
+      throw UsageError(e.what());
+    }
+    if (o->dot) std::cout << to_dot(software);
+    else if (o->canonical) std::cout << to_config_string(software) << "\n";
+    else std::cout << describe(software) << "  " << to_config_string(software) << "\n";
+  });
+}
+
+const CommandRegistrar registrar{10, [](CLI::App& app, Context& context) {
+                                   register_missions(app);
+                                   register_mission_show(app);
+                                   register_evaluate(app, context);
+                                   register_show_config(app, context);
+                                 }};
+
+}  // namespace
+}  // namespace sd::cli

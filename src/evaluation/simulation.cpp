@@ -1,0 +1,67 @@
+#include "evaluation/simulation.hpp"
+
+#include "simulator/placement.hpp"
+#include "simulator/sensors.hpp"
+
+namespace sd {
+
+Simulation::Simulation(const Mission& mission, const ControlSoftware& software)
+    : mission_(&mission),
+      software_(software),
+      controller_(software_, mission.robots),
+      objective_(mission.objective) {
+  swarm_.resize(mission.robots);
+  physics_.reset(mission.robots);
+  reference_.resize(static_cast<std::size_t>(mission.robots));
+}
+
+void Simulation::reset(std::uint64_t seed) {
+  rng_.reseed(seed);
+  tick_ = 0;
+  place_robots(mission_->arena, mission_->start, swarm_, rng_);
+  physics_.reset(mission_->robots);
+  for (auto& rm : reference_) rm.reset();
+  controller_.reset();
+  objective_.reset();
+}
+
+void Simulation::step() {
+  ++tick_;
+  const Mission& m = *mission_;
+  physics_.step(m.arena, swarm_);
+  sense(m.arena, m.robot, swarm_, rng_);
+  const double wheel_noise = m.robot.wheel_noise;
+  for (int i = 0; i < swarm_.size; ++i) {
+    const auto r = static_cast<std::size_t>(i);
+    reference_[r].update(swarm_, i);
+    const Actuation a = controller_.step(i, reference_[r], rng_);
+    // The wheel actuator takes cm/s; its noise multiplies each speed by 1 + N(0, s), drawn
+    // at every control step (a stopped wheel stays stopped, so no draw is needed).
+    double left = a.left_cm * 0.01, right = a.right_cm * 0.01;
+    if (wheel_noise > 0.0) {
+      if (left != 0.0) left *= 1.0 + wheel_noise * rng_.normal();
+      if (right != 0.0) right *= 1.0 + wheel_noise * rng_.normal();
+    }
+    swarm_.wheel_left[r] = left;
+    swarm_.wheel_right[r] = right;
+    swarm_.led[r] = a.led;
+  }
+  objective_.post_step(swarm_, tick_, rng_);
+}
+
+double Simulation::run(std::uint64_t seed, TickObserver* observer) {
+  reset(seed);
+  if (observer) observer->on_tick(*this);
+  while (!finished()) {
+    step();
+    if (observer) observer->on_tick(*this);
+  }
+  return score();
+}
+
+double evaluate(const Mission& mission, const ControlSoftware& software, std::uint64_t seed) {
+  Simulation simulation(mission, software);
+  return simulation.run(seed);
+}
+
+}  // namespace sd

@@ -1,0 +1,63 @@
+#pragma once
+// One run of a mission with one piece of control software: the whole data flow
+//   mission + control software + seed -> placement -> ticks -> score
+// Each tick: act (last command) -> physics -> sense -> reference model + control -> objective,
+// the order of ARGoS. Everything is sized in the constructor; a tick never allocates, and
+// one Simulation can run many seeds.
+#include <cstdint>
+#include <vector>
+
+#include "control/control_software.hpp"
+#include "control/swarm_controller.hpp"
+#include "core/rng.hpp"
+#include "missions/mission.hpp"
+#include "missions/objective.hpp"
+#include "robot/reference_model.hpp"
+#include "simulator/physics.hpp"
+#include "simulator/swarm.hpp"
+
+namespace sd {
+
+class Simulation;
+
+/// Observes a run tick by tick (trace files, the live viewer).
+class TickObserver {
+ public:
+  virtual ~TickObserver() = default;
+  /// Called after placement (tick 0) and after every tick.
+  virtual void on_tick(const Simulation& simulation) = 0;
+};
+
+class Simulation {
+ public:
+  Simulation(const Mission& mission, const ControlSoftware& software);
+
+  /// A whole evaluation: the mission's natural score for this seed.
+  double run(std::uint64_t seed, TickObserver* observer = nullptr);
+
+  void reset(std::uint64_t seed);
+  void step();
+  bool finished() const { return tick_ >= mission_->ticks; }
+
+  int tick() const { return tick_; }
+  double score() const { return objective_.value(); }
+  const Mission& mission() const { return *mission_; }
+  const SwarmState& swarm() const { return swarm_; }
+  int fsm_state(int robot) const { return controller_.current_state(robot); }
+
+ private:
+  const Mission* mission_;
+  ControlSoftware software_;
+  SwarmState swarm_;
+  Physics physics_;
+  std::vector<ReferenceModel> reference_;
+  SwarmController controller_;
+  ObjectiveTracker objective_;
+  Rng rng_;
+  int tick_ = 0;
+};
+
+/// Convenience: one evaluation.
+double evaluate(const Mission& mission, const ControlSoftware& software, std::uint64_t seed);
+
+}  // namespace sd

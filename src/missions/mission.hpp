@@ -1,0 +1,56 @@
+#pragma once
+// A mission: the arena, the swarm, where it starts, how long it runs and how it is scored.
+// Missions are data (JSON files in missions/ or anywhere a user puts them); loading one
+// validates every field and compiles the arena once, so evaluations only read it.
+#include <filesystem>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "simulator/arena.hpp"
+#include "simulator/region.hpp"
+#include "simulator/robot_model.hpp"
+
+namespace sd {
+
+enum class Direction { Maximize, Minimize };
+std::string_view direction_name(Direction d);
+
+/// Objective types, each a reusable building block with its own parameters.
+namespace objectives {
+/// Sum over ticks of the number of robots whose centre is in the region (AAC).
+struct RobotsInRegionPerTick {
+  Region region;
+};
+}  // namespace objectives
+
+struct ObjectiveSpec {
+  std::string type;
+  Direction direction = Direction::Maximize;
+  std::variant<objectives::RobotsInRegionPerTick> parameters;
+};
+
+struct Mission {
+  std::string name;
+  std::string title;
+  std::string origin;          // the AutoMoDe flavour that introduced it
+  std::string description;
+  std::string source;          // file it was read from, or "built-in"
+  double duration_s = 120.0;
+  int ticks = 1200;
+  int robots = 20;
+  Region start;
+  ArenaModel arena;
+  RobotModel robot;
+  ObjectiveSpec objective;
+};
+
+/// Invalid mission file: the message names the field ("arena.floor.patches[1].radius: ...").
+struct MissionError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+Mission parse_mission(const std::string& json_text, const std::string& source);
+Mission load_mission_file(const std::filesystem::path& path);
+
+}  // namespace sd

@@ -1,0 +1,87 @@
+#include "missions/svg.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+
+namespace sd {
+
+namespace {
+
+std::string rgb_text(std::uint32_t rgb) {
+  char buffer[8];
+  std::snprintf(buffer, sizeof buffer, "#%06x", rgb & 0xffffffu);
+  return buffer;
+}
+
+std::string region_element(const Region& r, const std::string& style) {
+  std::ostringstream out;
+  switch (r.shape) {
+    case Region::Shape::Circle:
+      out << "<circle cx=\"" << r.center.x << "\" cy=\"" << r.center.y << "\" r=\"" << r.radius << "\" " << style << "/>";
+      break;
+    case Region::Shape::Rectangle:
+      out << "<rect x=\"" << -r.half_size.x << "\" y=\"" << -r.half_size.y << "\" width=\"" << 2 * r.half_size.x
+          << "\" height=\"" << 2 * r.half_size.y << "\" transform=\"translate(" << r.center.x << " " << r.center.y
+          << ") rotate(" << r.yaw * 180.0 / kPi << ")\" " << style << "/>";
+      break;
+    case Region::Shape::Polygon:
+      out << "<polygon points=\"";
+      for (const Vec2 v : r.vertices) out << v.x << "," << v.y << " ";
+      out << "\" " << style << "/>";
+      break;
+  }
+  return out.str();
+}
+
+}  // namespace
+
+std::string mission_svg(const Mission& m) {
+  // Bounds: walls, patches, start region and lights, with a margin.
+  Vec2 lo{-0.5, -0.5}, hi{0.5, 0.5};
+  auto grow = [&](Vec2 a, Vec2 b) {
+    lo = {std::min(lo.x, a.x), std::min(lo.y, a.y)};
+    hi = {std::max(hi.x, b.x), std::max(hi.y, b.y)};
+  };
+  for (const Wall& w : m.arena.walls) {
+    const double r = w.bounding_radius();
+    grow(w.center - Vec2{r, r}, w.center + Vec2{r, r});
+  }
+  for (const FloorPatch& p : m.arena.floor_patches) grow(p.region.bounds().first, p.region.bounds().second);
+  grow(m.start.bounds().first, m.start.bounds().second);
+  for (const Light& l : m.arena.lights) grow(l.position.xy(), l.position.xy());
+  lo = lo - Vec2{0.15, 0.15};
+  hi = hi + Vec2{0.15, 0.15};
+
+  std::ostringstream out;
+  const double width = hi.x - lo.x, height = hi.y - lo.y;
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << static_cast<int>(width * 250) << "\" height=\""
+      << static_cast<int>(height * 250) << "\" viewBox=\"" << lo.x << " " << -hi.y << " " << width << " " << height
+      << "\">\n";
+  out << "<title>" << m.title << " (" << m.name << ")</title>\n";
+  // The world's y axis points up; SVG's points down.
+  out << "<g transform=\"scale(1 -1)\">\n";
+  out << "<rect x=\"" << lo.x << "\" y=\"" << lo.y << "\" width=\"" << width << "\" height=\"" << height
+      << "\" fill=\"" << rgb_text(m.arena.floor_background_rgb) << "\"/>\n";
+  // Patches are drawn last-first so that the first matching patch ends on top, as it wins.
+  for (auto it = m.arena.floor_patches.rbegin(); it != m.arena.floor_patches.rend(); ++it)
+    out << region_element(it->region, "fill=\"" + rgb_text(it->rgb) + "\"") << "\n";
+  out << region_element(m.start, "fill=\"none\" stroke=\"#1f77b4\" stroke-width=\"0.012\" stroke-dasharray=\"0.04 0.03\"")
+      << "\n";
+  for (const Wall& w : m.arena.walls) {
+    const double angle = w.axis.angle() * 180.0 / kPi;
+    out << "<rect x=\"" << -w.half_length << "\" y=\"" << -w.half_thickness << "\" width=\"" << 2 * w.half_length
+        << "\" height=\"" << std::max(2 * w.half_thickness, 0.012) << "\" transform=\"translate(" << w.center.x << " "
+        << w.center.y << ") rotate(" << angle << ")\" fill=\"" << (w.led_color ? rgb_text(w.led_color) : "#303030")
+        << "\"/>\n";
+  }
+  for (const Light& l : m.arena.lights) {
+    if (l.intensity <= 0) continue;
+    out << "<circle cx=\"" << l.position.x << "\" cy=\"" << l.position.y << "\" r=\"0.05\" fill=\"" << rgb_text(l.rgb)
+        << "\" stroke=\"#806000\" stroke-width=\"0.01\"/>\n";
+  }
+  out << "</g>\n</svg>\n";
+  return out.str();
+}
+
+}  // namespace sd
