@@ -1,0 +1,38 @@
+// The product's inner loop: one 20-robot, 120-s AAC evaluation on one core.
+// Reports ms per evaluation and robot-ticks per second.
+#include <benchmark/benchmark.h>
+
+#include "control/config_string.hpp"
+#include "evaluation/simulation.hpp"
+#include "missions/catalogue.hpp"
+
+namespace {
+
+// Two-state FSMs from the calibration set (shared/calibration/argos-reference.csv).
+const char* kAttractStop =
+    "--fsm-config --nstates 2 --s0 14 --att0 5 --n0 1 --n0x0 0 --c0x0 10 --p0x0 1.0 "
+    "--s1 11 --n1 1 --n1x0 0 --c1x0 11 --p1x0 0.1";
+const char* kExplorePhototaxis =
+    "--fsm-config --nstates 2 --s0 10 --rwm0 50 --n0 1 --n0x0 0 --c0x0 10 --p0x0 1 "
+    "--s1 12 --n1 1 --n1x0 0 --c1x0 12 --p1x0 1";
+
+void run_aac(benchmark::State& state, const char* config) {
+  const sd::Mission mission = sd::load_mission("aac");
+  const sd::ControlSoftware software = sd::parse_control_software(std::string(config));
+  sd::Simulation simulation(mission, software);
+  std::uint64_t seed = 1;
+  for (auto _ : state) benchmark::DoNotOptimize(simulation.run(seed++));
+  const double robot_ticks = static_cast<double>(mission.robots) * mission.ticks;
+  state.counters["robot_ticks_per_s"] =
+      benchmark::Counter(robot_ticks * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+
+void BM_AacAttractionStop(benchmark::State& state) { run_aac(state, kAttractStop); }
+void BM_AacExplorationPhototaxis(benchmark::State& state) { run_aac(state, kExplorePhototaxis); }
+
+BENCHMARK(BM_AacAttractionStop)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_AacExplorationPhototaxis)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+
+}  // namespace
+
+BENCHMARK_MAIN();
