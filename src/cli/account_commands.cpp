@@ -68,10 +68,10 @@ std::string read_line_or_fail(const char* what) {
 }
 
 std::string prompt_without_echo(const std::string& prompt) {
-  std::cerr << prompt << std::flush;
   std::string line;
   {
-    EchoOff echo_off;
+    EchoOff echo_off;  // before the prompt, so nothing typed after it is ever echoed
+    std::cerr << prompt << std::flush;
     line = read_line_or_fail("the terminal");
   }
   std::cerr << '\n';  // the user's Enter was not echoed
