@@ -45,7 +45,11 @@ class EchoOff {
     termios quiet = saved_terminal;
     quiet.c_lflag &= ~static_cast<tcflag_t>(ECHO);
     echo_is_off = 1;
-    if (tcsetattr(STDIN_FILENO, TCSAFLUSH, &quiet) != 0) throw std::runtime_error("cannot turn off terminal echo");
+    if (tcsetattr(STDIN_FILENO, TCSAFLUSH, &quiet) != 0) {
+      echo_is_off = 0;
+      for (int i = 0; i < 3; ++i) sigaction(kSignals[i], &previous_[i], nullptr);
+      throw std::runtime_error("cannot turn off terminal echo");
+    }
   }
   ~EchoOff() {
     tcsetattr(STDIN_FILENO, TCSAFLUSH, &saved_terminal);
