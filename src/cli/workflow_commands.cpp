@@ -22,7 +22,10 @@ namespace sd::cli {
 namespace {
 
 // ---- The mission catalogue, behind a seam -------------------------------------------------
-// Same fields as sd::MissionSummary of missions/catalogue.hpp.
+// MISSIONS WIRING (lead, at merge): #include "missions/catalogue.hpp" at the top, then
+// replace struct MissionEntry with `using MissionEntry = sd::MissionSummary;` and the body
+// of catalogue() with `return {&sd::list_missions, &sd::mission_exists};` (and link
+// sd_missions to swarmdesign unless sd_evaluation brings it). Until then, a stand-in list.
 struct MissionEntry {
   std::string name, origin, direction;
   int robots;
@@ -34,11 +37,6 @@ struct MissionCatalogue {
   std::function<bool(const std::string& name_or_path)> exists;
 };
 
-// MISSIONS WIRING (lead, at merge): replace this stand-in with the real catalogue:
-//   #include "missions/catalogue.hpp"
-//   MissionCatalogue catalogue() { return {[] { auto all = sd::list_missions(); return std::vector<MissionEntry>(all.begin(), all.end()); }, &sd::mission_exists}; }
-// (give MissionEntry a constructor from sd::MissionSummary, or make it an alias of it) and
-// link sd_missions to the swarmdesign target.
 MissionCatalogue catalogue() {
   static const std::vector<MissionEntry> stand_in = {
       {"aac", "Chocolate", "maximise", 20, 120.0},
@@ -52,6 +50,7 @@ MissionCatalogue catalogue() {
             return false;
           }};
 }
+// ---- end of seam ----------------------------------------------------------------------------
 
 // ---- set-budget ---------------------------------------------------------------------------
 
