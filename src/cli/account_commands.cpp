@@ -1,0 +1,238 @@
+// Accounts: sign-up, sign-in, exit, show-users (thesis spellings as aliases).
+#include <CLI/CLI.hpp>
+#include <signal.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli/command_registry.hpp"
+#include "storage/accounts.hpp"
+#include "storage/clock.hpp"
+#include "storage/errors.hpp"
+#include "storage/passwords.hpp"
+#include "storage/session_file.hpp"
+#include "storage/sessions.hpp"
+#include "storage/validation.hpp"
+#include "storage/workspace.hpp"
+
+namespace sd::cli {
+namespace {
+
+// ---- Reading a password -----------------------------------------------------------------
+
+termios saved_terminal{};
+volatile sig_atomic_t echo_is_off = 0;
+
+// A Ctrl-C at the password prompt must not leave the terminal without echo.
+extern "C" void restore_echo_and_reraise(int signal_number) {
+  if (echo_is_off) tcsetattr(STDIN_FILENO, TCSANOW, &saved_terminal);
+  ::signal(signal_number, SIG_DFL);
+  ::raise(signal_number);
+}
+
+/// Turns terminal echo off for its lifetime.
+class EchoOff {
+ public:
+  EchoOff() {
+    if (tcgetattr(STDIN_FILENO, &saved_terminal) != 0) throw std::runtime_error("cannot read the terminal settings");
+    struct sigaction action {};
+    action.sa_handler = restore_echo_and_reraise;
+    for (int i = 0; i < 3; ++i) sigaction(kSignals[i], &action, &previous_[i]);
+    termios quiet = saved_terminal;
+    quiet.c_lflag &= ~static_cast<tcflag_t>(ECHO);
+    echo_is_off = 1;
+    if (tcsetattr(STDIN_FILENO, TCSAFLUSH, &quiet) != 0) {
+      echo_is_off = 0;
+      for (int i = 0; i < 3; ++i) sigaction(kSignals[i], &previous_[i], nullptr);
+      throw std::runtime_error("cannot turn off terminal echo");
+    }
+  }
+  ~EchoOff() {
+    tcsetattr(STDIN_FILENO, TCSAFLUSH, &saved_terminal);
+    echo_is_off = 0;
+    for (int i = 0; i < 3; ++i) sigaction(kSignals[i], &previous_[i], nullptr);
+  }
+  EchoOff(const EchoOff&) = delete;
+  EchoOff& operator=(const EchoOff&) = delete;
+
+ private:
+  static constexpr int kSignals[3] = {SIGINT, SIGTERM, SIGHUP};
+  struct sigaction previous_[3] {};
+};
+
+std::string read_line_or_fail(const char* what) {
+  std::string line;
+  if (!std::getline(std::cin, line) && line.empty()) throw UsageError(std::string("no password given on ") + what);
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  return line;
+}
+
+std::string prompt_without_echo(const std::string& prompt) {
+  std::string line;
+  {
+    EchoOff echo_off;  // before the prompt, so nothing typed after it is ever echoed
+    std::cerr << prompt << std::flush;
+    line = read_line_or_fail("the terminal");
+  }
+  std::cerr << '\n';  // the user's Enter was not echoed
+  return line;
+}
+
+/// One line of stdin with --password-stdin, else a no-echo prompt (twice when `confirm`).
+std::string read_password(bool from_stdin, const std::string& prompt, bool confirm) {
+  if (from_stdin) return read_line_or_fail("standard input");
+  if (!isatty(STDIN_FILENO))
+    throw UsageError("standard input is not a terminal; to pass the password on standard input use --password-stdin");
+  std::string password = prompt_without_echo(prompt);
+  if (confirm) {
+    std::string again = prompt_without_echo("Repeat the password: ");
+    const bool same = again == password;
+    storage::wipe(again);
+    if (!same) {
+      storage::wipe(password);
+      throw UsageError("the two passwords differ; nothing was changed");
+    }
+  }
+  return password;
+}
+
+/// Wipes the password when the command is done with it, whichever way it ends.
+struct Password {
+  std::string text;
+  ~Password() { storage::wipe(text); }
+};
+
+void require_valid_user_name(const std::string& name) {
+  if (auto problem = storage::user_name_problem(name); !problem.empty()) throw UsageError(problem);
+}
+
+// ---- The commands -------------------------------------------------------------------------
+
+struct AccountOptions {
+  std::string user;
+  bool password_stdin = false;
+  bool json = false;
+};
+
+void sign_up(const AccountOptions& options) {
+  require_valid_user_name(options.user);
+  storage::Workspace workspace;
+  // Say so before asking for a password that would be thrown away.
+  if (storage::user_exists(workspace.database(), options.user))
+    throw storage::Conflict("user name '" + options.user + "' is already taken; choose another");
+  Password password{read_password(options.password_stdin, "Password for new user " + options.user + ": ", true)};
+  if (auto problem = storage::password_problem(password.text, options.user); !problem.empty()) throw UsageError(problem);
+  const auto user = storage::create_user(workspace.database(), options.user, password.text);
+  std::cout << "Created user " << user.name << ". Sign in with: swarmdesign sign-in " << user.name << '\n';
+}
+
+void sign_in(const AccountOptions& options) {
+  require_valid_user_name(options.user);
+  storage::Workspace workspace;
+  Password password{read_password(options.password_stdin, "Password for " + options.user + ": ", false)};
+  const auto user = storage::authenticate(workspace.database(), options.user, password.text);
+
+  // The session this replaces, if any, is ended once the new one is in place.
+  std::optional<std::string> previous;
+  try {
+    previous = storage::read_session_file(workspace.session_file());
+  } catch (const storage::AccessDenied&) {
+    // An unreadable or unsafe old file is simply replaced.
+  }
+  const auto session = storage::start_session(workspace.database(), user);
+  try {
+    storage::write_session_file(workspace.session_file(), session.token);
+  } catch (...) {
+    storage::end_session(workspace.database(), session.token);
+    throw;
+  }
+  if (previous) storage::end_session(workspace.database(), *previous);
+  std::cout << "Signed in as " << user.name << " until " << storage::format_time(session.expires_at) << ".\n";
+}
+
+void sign_out() {
+  storage::Workspace workspace;
+  std::optional<std::string> token;
+  try {
+    token = storage::read_session_file(workspace.session_file());
+  } catch (const storage::AccessDenied&) {
+    // Signing out must work even with a damaged or unsafe session file: just remove it.
+    storage::remove_session_file(workspace.session_file());
+    std::cout << "Removed the session file; you are signed out.\n";
+    return;
+  }
+  if (!token) {
+    std::cout << "Not signed in; nothing to do.\n";
+    return;
+  }
+  const auto session = storage::find_session(workspace.database(), *token);
+  storage::end_session(workspace.database(), *token);
+  storage::remove_session_file(workspace.session_file());
+  std::cout << "Signed out" << (session ? " " + session->user.name : std::string()) << ".\n";
+}
+
+void show_users(const AccountOptions& options) {
+  storage::Workspace workspace;
+  const auto me = workspace.signed_in_user();
+  const auto users = storage::list_users(workspace.database());
+  if (options.json) {
+    auto list = nlohmann::json::array();
+    for (const auto& user : users)
+      list.push_back({{"name", user.name},
+                      {"created", storage::format_time(user.created_at)},
+                      {"signed_in", me && me->id == user.id}});
+    std::cout << nlohmann::json{{"users", list}}.dump(2) << '\n';
+    return;
+  }
+  if (users.empty()) {
+    std::cout << "No users yet. Create one with: swarmdesign sign-up USER\n";
+    return;
+  }
+  for (const auto& user : users)
+    std::cout << (me && me->id == user.id ? "* " : "  ") << user.name << "  (since "
+              << storage::format_time(user.created_at) << ")\n";
+  if (me) std::cout << "(* signed in)\n";
+}
+
+const std::string kPasswordHelp =
+    "The password is read from the terminal without echo, or as one line of standard input "
+    "with --password-stdin.";
+
+CommandRegistrar registrar{10, [](CLI::App& app, Context&) {
+  auto options = std::make_shared<AccountOptions>();
+
+  auto* sign_up_command = app.add_subcommand("sign-up", "Create a SwarmDesign account");
+  sign_up_command->alias("signUp");
+  sign_up_command->add_option("USER", options->user, "user name: a letter, then letters, digits, '.', '_' or '-'")
+      ->required();
+  sign_up_command->add_flag("--password-stdin", options->password_stdin, "read the password from standard input");
+  sign_up_command->footer(kPasswordHelp + " Rule: " + storage::password_rule() +
+                          ". It is stored only as an Argon2id hash.\n\nExample:\n  swarmdesign sign-up alice\n"
+                          "  printf '%s\\n' \"$PASSWORD\" | swarmdesign sign-up alice --password-stdin");
+  sign_up_command->callback([options] { sign_up(*options); });
+
+  auto* sign_in_command = app.add_subcommand("sign-in", "Sign in; later commands act as this user");
+  sign_in_command->alias("signIn");
+  sign_in_command->add_option("USER", options->user, "user name")->required();
+  sign_in_command->add_flag("--password-stdin", options->password_stdin, "read the password from standard input");
+  sign_in_command->footer(kPasswordHelp + " A session lasts 7 days (or until `swarmdesign exit`); its token is kept in "
+                          "$SWARMDESIGN_HOME/session, readable only by you.\n\nExample:\n  swarmdesign sign-in alice");
+  sign_in_command->callback([options] { sign_in(*options); });
+
+  auto* exit_command = app.add_subcommand("exit", "Sign out: end the session and delete its token");
+  exit_command->footer("Example:\n  swarmdesign exit");
+  exit_command->callback([] { sign_out(); });
+
+  auto* show_users_command = app.add_subcommand("show-users", "List the user names (* marks you)");
+  show_users_command->alias("showUsers");
+  show_users_command->add_flag("--json", options->json, "print one JSON document");
+  show_users_command->footer("Example:\n  swarmdesign show-users");
+  show_users_command->callback([options] { show_users(*options); });
+}};
+
+}  // namespace
+}  // namespace sd::cli

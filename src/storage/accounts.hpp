@@ -1,0 +1,29 @@
+#pragma once
+// SwarmDesign accounts: user names with Argon2id password hashes.
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "storage/sqlite.hpp"
+
+namespace sd::storage {
+
+struct User {
+  std::int64_t id = 0;
+  std::string name;
+  std::int64_t created_at = 0;
+};
+
+bool user_exists(Database& db, std::string_view name);
+
+/// Creates an account; Conflict if the name is taken (names are case-insensitive).
+User create_user(Database& db, std::string_view name, std::string_view password);
+
+/// The account if the password is right; NotFound for an unknown user, AccessDenied for a
+/// wrong password. Re-hashes an old-limits hash on success.
+User authenticate(Database& db, std::string_view name, std::string_view password);
+
+std::vector<User> list_users(Database& db);
+
+}  // namespace sd::storage

@@ -1,0 +1,171 @@
+#include "storage/designs.hpp"
+
+#include <signal.h>
+
+#include <cerrno>
+
+#include "storage/clock.hpp"
+#include "storage/errors.hpp"
+
+namespace sd::storage {
+
+namespace {
+constexpr std::string_view kSelectDesigns =
+    "SELECT id, architectures, flavours, mission, budget, seed, state, pid, path, best_config, best_score, "
+    "       created_at, updated_at, finished_at "
+    "FROM designs WHERE project_id = ? ";
+
+DesignState state_from(const std::string& text) {
+  if (text == "finished") return DesignState::finished;
+  if (text == "failed") return DesignState::failed;
+  if (text == "interrupted") return DesignState::interrupted;
+  return DesignState::running;
+}
+
+Design read_design(const Statement& row, const Workspace& workspace) {
+  Design design;
+  design.id = row.integer(0);
+  design.architectures = row.text(1);
+  design.flavours = row.text(2);
+  design.mission = row.text(3);
+  design.budget = row.integer(4);
+  design.seed = static_cast<std::uint64_t>(row.integer(5));  // stored as its 64-bit pattern
+  design.state = state_from(row.text(6));
+  design.pid = static_cast<int>(row.integer(7));
+  design.folder = workspace.resolve(row.text(8));
+  if (!row.is_null(9)) design.best_config = row.text(9);
+  if (!row.is_null(10)) design.best_score = row.real(10);
+  design.created_at = row.integer(11);
+  design.updated_at = row.integer(12);
+  if (!row.is_null(13)) design.finished_at = row.integer(13);
+  return design;
+}
+
+/// A process that no longer exists cannot be running a design (EPERM: it exists, not ours).
+bool process_alive(std::int64_t pid) {
+  return pid > 0 && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM);
+}
+}  // namespace
+
+std::string to_string(DesignState state) {
+  switch (state) {
+    case DesignState::running: return "running";
+    case DesignState::finished: return "finished";
+    case DesignState::failed: return "failed";
+    case DesignState::interrupted: return "interrupted";
+  }
+  return "running";
+}
+
+Designs::Designs(Workspace& workspace, Project project) : workspace_(workspace), project_(std::move(project)) {}
+
+void Designs::mark_dead_designs_interrupted() {
+  Database& db = workspace_.database();
+  std::vector<std::int64_t> dead;  // collected first: no updates while the query is open
+  auto running = db.prepare("SELECT id, pid FROM designs WHERE project_id = ? AND state = 'running'");
+  running.bind(1, project_.id);
+  while (running.step())
+    if (!process_alive(running.integer(1))) dead.push_back(running.integer(0));
+  for (const std::int64_t id : dead)
+    db.prepare("UPDATE designs SET state = 'interrupted', updated_at = ? WHERE id = ? AND state = 'running'")
+        .bind(1, unix_now()).bind(2, id).run();
+}
+
+Design Designs::start(const DesignRequest& request) {
+  if (project_.cluster)
+    throw Conflict("project " + project_.name + " runs on a cluster, and running designs on a cluster is not available yet");
+  if (!project_.mission) throw NotFound("project " + project_.name + " has no mission; choose one with: swarmdesign set-mission");
+  if (!project_.budget) throw NotFound("project " + project_.name + " has no budget; set one with: swarmdesign set-budget N");
+  if (request.architectures.empty() || request.flavours.empty())
+    throw InvalidInput("a design needs at least one architecture and one flavour");
+
+  Database& db = workspace_.database();
+  Transaction transaction(db);
+  mark_dead_designs_interrupted();
+  auto running = db.prepare("SELECT id FROM designs WHERE project_id = ? AND state = 'running'");
+  running.bind(1, project_.id);
+  if (running.step())
+    throw Conflict("design " + std::to_string(running.integer(0)) + " of project " + project_.name +
+                   " is still running; watch it with: swarmdesign status");
+
+  const std::int64_t now = unix_now();
+  const auto project_folder = std::filesystem::relative(project_.folder, workspace_.home());
+  db.prepare("INSERT INTO designs (project_id, architectures, flavours, mission, budget, seed, pid, path, created_at, "
+             "updated_at) VALUES (?, ?, ?, ?, ?, ?, ?, '', ?, ?)")
+      .bind(1, project_.id).bind(2, request.architectures).bind(3, request.flavours).bind(4, *project_.mission)
+      .bind(5, *project_.budget).bind(6, static_cast<std::int64_t>(request.seed)).bind(7, request.pid)
+      .bind(8, now).bind(9, now).run();
+  const std::int64_t id = db.last_insert_id();
+  const auto folder = project_folder / "designs" / std::to_string(id);
+  db.prepare("UPDATE designs SET path = ? WHERE id = ?").bind(1, folder.string()).bind(2, id).run();
+  std::filesystem::create_directories(workspace_.resolve(folder));
+  transaction.commit();
+  return get(id);
+}
+
+void Designs::set_state(std::int64_t design_id, DesignState state, std::string_view from_states) {
+  Database& db = workspace_.database();
+  db.prepare("UPDATE designs SET state = ?, updated_at = ? WHERE id = ? AND project_id = ? AND state IN " +
+             std::string(from_states))
+      .bind(1, to_string(state)).bind(2, unix_now()).bind(3, design_id).bind(4, project_.id).run();
+  if (db.changes() == 0) throw Conflict("design " + std::to_string(design_id) + " cannot become " + to_string(state) + " now");
+}
+
+Design Designs::resume(std::int64_t design_id, int pid) {
+  Database& db = workspace_.database();
+  Transaction transaction(db);
+  mark_dead_designs_interrupted();
+  get(design_id);  // NotFound for another project's design
+  auto running = db.prepare("SELECT id FROM designs WHERE project_id = ? AND state = 'running'");
+  running.bind(1, project_.id);
+  if (running.step())
+    throw Conflict("design " + std::to_string(running.integer(0)) + " of project " + project_.name + " is still running");
+  set_state(design_id, DesignState::running, "('interrupted', 'failed')");
+  db.prepare("UPDATE designs SET pid = ? WHERE id = ?").bind(1, pid).bind(2, design_id).run();
+  transaction.commit();
+  return get(design_id);
+}
+
+void Designs::finish(std::int64_t design_id, const std::string& best_config, double best_score) {
+  Database& db = workspace_.database();
+  Transaction transaction(db);
+  set_state(design_id, DesignState::finished, "('running')");
+  db.prepare("UPDATE designs SET best_config = ?, best_score = ?, finished_at = updated_at WHERE id = ?")
+      .bind(1, best_config).bind(2, best_score).bind(3, design_id).run();
+  transaction.commit();
+}
+
+void Designs::mark_failed(std::int64_t design_id) {
+  Database& db = workspace_.database();
+  Transaction transaction(db);
+  set_state(design_id, DesignState::failed, "('running')");
+  db.prepare("UPDATE designs SET finished_at = updated_at WHERE id = ?").bind(1, design_id).run();
+  transaction.commit();
+}
+
+Design Designs::get(std::int64_t design_id) {
+  auto query = workspace_.database().prepare(std::string(kSelectDesigns) + "AND id = ?");
+  query.bind(1, project_.id).bind(2, design_id);
+  if (!query.step()) throw NotFound("project " + project_.name + " has no design " + std::to_string(design_id));
+  return read_design(query, workspace_);
+}
+
+std::optional<Design> Designs::latest() {
+  auto query = workspace_.database().prepare(std::string(kSelectDesigns) + "ORDER BY id DESC LIMIT 1");
+  query.bind(1, project_.id);
+  if (!query.step()) return std::nullopt;
+  Design design = read_design(query, workspace_);
+  // Reading must not need the write lock: report a dead "running" design as interrupted.
+  if (design.state == DesignState::running && !process_alive(design.pid)) design.state = DesignState::interrupted;
+  return design;
+}
+
+std::vector<Design> Designs::list() {
+  std::vector<Design> designs;
+  auto query = workspace_.database().prepare(std::string(kSelectDesigns) + "ORDER BY id");
+  query.bind(1, project_.id);
+  while (query.step()) designs.push_back(read_design(query, workspace_));
+  return designs;
+}
+
+}  // namespace sd::storage

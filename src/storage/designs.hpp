@@ -1,0 +1,70 @@
+#pragma once
+// The design processes of one project: the rows `run-design` writes and `status` reads.
+// Progress inside a race (iterations, experiments, elites, the log) is not kept here but in
+// the design's own folder, where the optimiser keeps its race state in its own SQLite file.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "storage/projects.hpp"
+#include "storage/workspace.hpp"
+
+namespace sd::storage {
+
+enum class DesignState { running, finished, failed, interrupted };
+std::string to_string(DesignState state);
+
+/// What run-design was asked for; mission and budget are copied from the project.
+struct DesignRequest {
+  std::string architectures;  // e.g. "fsm,bt"
+  std::string flavours;       // e.g. "chocolate,maple"
+  std::uint64_t seed = 0;
+  int pid = 0;                // the process that runs the design
+};
+
+struct Design {
+  std::int64_t id = 0;
+  std::string architectures, flavours, mission;
+  std::int64_t budget = 0;
+  std::uint64_t seed = 0;
+  DesignState state = DesignState::running;
+  int pid = 0;
+  std::filesystem::path folder;  // absolute; holds the race data
+  std::optional<std::string> best_config;
+  std::optional<double> best_score;
+  std::int64_t created_at = 0, updated_at = 0;
+  std::optional<std::int64_t> finished_at;
+};
+
+class Designs {
+ public:
+  /// The designs of a project obtained through Projects (so already owned by the user).
+  Designs(Workspace& workspace, Project project);
+
+  /// Records a running design and creates its folder <project>/designs/<id>. Refuses a
+  /// cluster project (not available yet), a project without mission or budget, and a
+  /// second running design (Conflict); a "running" design whose process is gone is first
+  /// marked interrupted.
+  Design start(const DesignRequest& request);
+  /// Marks an interrupted (or failed) design running again under a new process.
+  Design resume(std::int64_t design_id, int pid);
+  void finish(std::int64_t design_id, const std::string& best_config, double best_score);
+  void mark_failed(std::int64_t design_id);
+
+  /// The current or last design, for `status`; running designs whose process is gone are
+  /// reported as interrupted.
+  std::optional<Design> latest();
+  std::vector<Design> list();
+
+ private:
+  void mark_dead_designs_interrupted();
+  Design get(std::int64_t design_id);
+  void set_state(std::int64_t design_id, DesignState state, std::string_view from_states);
+
+  Workspace& workspace_;
+  Project project_;
+};
+
+}  // namespace sd::storage

@@ -1,0 +1,122 @@
+#include "storage/schema.hpp"
+
+#include <array>
+#include <string>
+
+namespace sd::storage {
+
+namespace {
+
+// Append-only: a released migration never changes; a new schema is a new entry.
+// Times are Unix seconds (UTC). Paths are relative to the SwarmDesign home, so a home can
+// be moved or copied as a whole.
+constexpr std::array kMigrations = {
+    // 1: accounts, sessions, projects, cluster connections, designs.
+    R"sql(
+CREATE TABLE users (
+  id            INTEGER PRIMARY KEY,
+  name          TEXT    NOT NULL UNIQUE COLLATE NOCASE,
+  -- libsodium crypto_pwhash_str output; never the password itself.
+  password_hash TEXT    NOT NULL CHECK (password_hash LIKE '$argon2id$%'),
+  created_at    INTEGER NOT NULL
+);
+
+-- A signed-in session: only a BLAKE2b-256 hash of the random token is stored; the token
+-- itself sits in a 0600 file in the home.
+CREATE TABLE sessions (
+  id         INTEGER PRIMARY KEY,
+  user_id    INTEGER NOT NULL REFERENCES users(id) ON DELETE CASCADE,
+  token_hash BLOB    NOT NULL UNIQUE CHECK (length(token_hash) = 32),
+  created_at INTEGER NOT NULL,
+  expires_at INTEGER NOT NULL CHECK (expires_at > created_at)
+);
+CREATE INDEX sessions_by_user ON sessions(user_id);
+
+CREATE TABLE cluster_connections (
+  id        INTEGER PRIMARY KEY,
+  owner_id  INTEGER NOT NULL REFERENCES users(id) ON DELETE CASCADE,
+  host      TEXT    NOT NULL CHECK (host <> ''),
+  user_name TEXT    NOT NULL CHECK (user_name <> ''),
+  UNIQUE (owner_id, host, user_name)
+);
+
+CREATE TABLE projects (
+  id         INTEGER PRIMARY KEY,
+  owner_id   INTEGER NOT NULL REFERENCES users(id) ON DELETE CASCADE,
+  name       TEXT    NOT NULL COLLATE NOCASE,
+  path       TEXT    NOT NULL,              -- the project folder, relative to the home
+  mission    TEXT,                          -- catalogue name or absolute path of a mission file
+  budget     INTEGER CHECK (budget IS NULL OR budget > 0),  -- simulation runs
+  location   TEXT    NOT NULL CHECK (location IN ('local', 'cluster')),
+  cluster_id INTEGER REFERENCES cluster_connections(id),
+  created_at INTEGER NOT NULL,
+  UNIQUE (owner_id, name),
+  UNIQUE (id, owner_id),                    -- target of active_projects' ownership check
+  CHECK ((location = 'cluster') = (cluster_id IS NOT NULL))
+);
+
+-- The project each user works on. The composite key makes it impossible, even by a bug,
+-- to make another user's project someone's active one.
+CREATE TABLE active_projects (
+  user_id    INTEGER PRIMARY KEY REFERENCES users(id) ON DELETE CASCADE,
+  project_id INTEGER NOT NULL,
+  FOREIGN KEY (project_id, user_id) REFERENCES projects(id, owner_id) ON DELETE CASCADE
+);
+
+-- One design process of a project. Its settings are copied from the project when it
+-- starts, so later set-mission / set-budget do not rewrite history. The race itself
+-- (iterations, experiments, elites, log) lives in the design's own folder, in its own
+-- SQLite file written by the optimiser; `status` reads the state here and the progress there.
+CREATE TABLE designs (
+  id            INTEGER PRIMARY KEY,
+  project_id    INTEGER NOT NULL REFERENCES projects(id) ON DELETE CASCADE,
+  architectures TEXT    NOT NULL CHECK (architectures <> ''),  -- e.g. 'fsm,bt'
+  flavours      TEXT    NOT NULL CHECK (flavours <> ''),       -- e.g. 'chocolate,maple'
+  mission       TEXT    NOT NULL,
+  budget        INTEGER NOT NULL CHECK (budget > 0),
+  seed          INTEGER NOT NULL,
+  state         TEXT    NOT NULL DEFAULT 'running'
+                CHECK (state IN ('running', 'finished', 'failed', 'interrupted')),
+  pid           INTEGER,                 -- process running it, to tell a killed design
+  path          TEXT    NOT NULL,        -- the design's folder (race data), relative to the home
+  best_config   TEXT,                    -- best control software when finished
+  best_score    REAL,
+  created_at    INTEGER NOT NULL,
+  updated_at    INTEGER NOT NULL,
+  finished_at   INTEGER
+);
+CREATE INDEX designs_by_project ON designs(project_id, id);
+-- At most one running design per project: a second run-design fails here, atomically.
+CREATE UNIQUE INDEX one_running_design_per_project ON designs(project_id) WHERE state = 'running';
+)sql",
+};
+
+}  // namespace
+
+int latest_schema_version() { return static_cast<int>(kMigrations.size()); }
+
+int schema_version(Database& db) {
+  auto statement = db.prepare("PRAGMA user_version");
+  statement.step();
+  return static_cast<int>(statement.integer(0));
+}
+
+void migrate(Database& db) {
+  const int latest = latest_schema_version();
+  while (true) {
+    if (schema_version(db) >= latest) break;  // cheap check outside the write lock
+    Transaction transaction(db);
+    // Another process may have migrated while we waited for the lock: read again.
+    const int current = schema_version(db);
+    if (current >= latest) break;
+    db.execute(kMigrations[static_cast<std::size_t>(current)]);
+    db.execute("PRAGMA user_version = " + std::to_string(current + 1));
+    transaction.commit();
+  }
+  if (const int found = schema_version(db); found > latest)
+    throw DatabaseError("database " + db.path().string() + " has schema version " + std::to_string(found) +
+                        ", newer than this swarmdesign understands (" + std::to_string(latest) +
+                        "); use a newer swarmdesign");
+}
+
+}  // namespace sd::storage

@@ -1,0 +1,69 @@
+#include "storage/sessions.hpp"
+
+#include <sodium.h>
+
+#include <array>
+
+#include "storage/clock.hpp"
+#include "storage/sodium.hpp"
+
+namespace sd::storage {
+
+namespace {
+using TokenHash = std::array<unsigned char, 32>;
+
+TokenHash hash_token(std::string_view token) {
+  ensure_sodium();
+  TokenHash hash{};
+  crypto_generichash(hash.data(), hash.size(), reinterpret_cast<const unsigned char*>(token.data()), token.size(),
+                     nullptr, 0);
+  return hash;
+}
+
+std::string random_token() {
+  ensure_sodium();
+  std::array<unsigned char, 32> bytes{};
+  randombytes_buf(bytes.data(), bytes.size());
+  std::string hex(bytes.size() * 2 + 1, '\0');
+  sodium_bin2hex(hex.data(), hex.size(), bytes.data(), bytes.size());
+  hex.pop_back();  // the terminating NUL
+  sodium_memzero(bytes.data(), bytes.size());
+  return hex;
+}
+}  // namespace
+
+NewSession start_session(Database& db, const User& user) {
+  NewSession session{random_token(), 0};
+  const TokenHash hash = hash_token(session.token);
+  const std::int64_t now = unix_now();
+  session.expires_at = now + kSessionLifetime.count();
+  Transaction transaction(db);
+  db.prepare("DELETE FROM sessions WHERE expires_at <= ?").bind(1, now).run();
+  db.prepare("INSERT INTO sessions (user_id, token_hash, created_at, expires_at) VALUES (?, ?, ?, ?)")
+      .bind(1, user.id)
+      .bind_blob(2, hash.data(), hash.size())
+      .bind(3, now)
+      .bind(4, session.expires_at)
+      .run();
+  transaction.commit();
+  return session;
+}
+
+std::optional<SessionRecord> find_session(Database& db, std::string_view token) {
+  const TokenHash hash = hash_token(token);
+  auto query = db.prepare(
+      "SELECT u.id, u.name, u.created_at, s.expires_at FROM sessions s JOIN users u ON u.id = s.user_id "
+      "WHERE s.token_hash = ?");
+  query.bind_blob(1, hash.data(), hash.size());
+  if (!query.step()) return std::nullopt;
+  return SessionRecord{User{query.integer(0), query.text(1), query.integer(2)}, query.integer(3)};
+}
+
+void end_session(Database& db, std::string_view token) {
+  const TokenHash hash = hash_token(token);
+  Transaction transaction(db);
+  db.prepare("DELETE FROM sessions WHERE token_hash = ?").bind_blob(1, hash.data(), hash.size()).run();
+  transaction.commit();
+}
+
+}  // namespace sd::storage
