@@ -63,7 +63,7 @@ int main(int argc, char** argv) {
     for (const CLI::App* sub : app.get_subcommands({}))
       known = known || sub->check_name(args.front());
     if (!known) {
-      print_error("unknown command '" + args.front() + "' (see swarmdesign --help)");
+      print_error("unknown command '" + args.front() + "' (see --help)");
       return 2;
     }
   }

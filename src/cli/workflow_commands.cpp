@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cli/command_registry.hpp"
+#include "missions/catalogue.hpp"
 #include "storage/errors.hpp"
 #include "storage/projects.hpp"
 #include "storage/validation.hpp"
@@ -22,34 +23,15 @@ namespace sd::cli {
 namespace {
 
 // ---- The mission catalogue, behind a seam -------------------------------------------------
-// MISSIONS WIRING (lead, at merge): #include "missions/catalogue.hpp" at the top, then
-// replace struct MissionEntry with `using MissionEntry = sd::MissionSummary;` and the body
-// of catalogue() with `return {&sd::list_missions, &sd::mission_exists};` (and link
-// sd_missions to swarmdesign unless sd_evaluation brings it). Until then, a stand-in list.
-struct MissionEntry {
-  std::string name, origin, direction;
-  int robots;
-  double duration_s;
-};
+// The mission catalogue (built-in missions plus $SWARMDESIGN_HOME/missions).
+using MissionEntry = sd::MissionSummary;
 
 struct MissionCatalogue {
   std::function<std::vector<MissionEntry>()> list;
   std::function<bool(const std::string& name_or_path)> exists;
 };
 
-MissionCatalogue catalogue() {
-  static const std::vector<MissionEntry> stand_in = {
-      {"aac", "Chocolate", "maximise", 20, 120.0},
-      {"foraging", "Vanilla/Maple", "maximise", 20, 120.0},
-      {"aggregation-xor", "Arlequin", "maximise", 20, 180.0},
-  };
-  return {[] { return stand_in; },
-          [](const std::string& name) {
-            for (const auto& mission : stand_in)
-              if (mission.name == name) return true;
-            return false;
-          }};
-}
+MissionCatalogue catalogue() { return {&sd::list_missions, &sd::mission_exists}; }
 // ---- end of seam ----------------------------------------------------------------------------
 
 // ---- set-budget ---------------------------------------------------------------------------

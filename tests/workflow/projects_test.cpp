@@ -1,6 +1,10 @@
 // Projects and the design settings, end to end, and the isolation between users.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
 #include <nlohmann/json.hpp>
 
 #include "workflow/workflow_fixture.hpp"
@@ -38,8 +42,16 @@ TEST_F(workflow_projects, SetMissionWithoutANameOffersANumberedList) {
   EXPECT_NE(by_number.find("Mission (number or name): "), std::string::npos);
   EXPECT_EQ(query("SELECT mission FROM projects"), "aac");
 
-  run_ok({"set-mission"}, "foraging\n");
-  EXPECT_EQ(query("SELECT mission FROM projects"), "foraging");
+  // A user's own mission in $SWARMDESIGN_HOME/missions is offered by name too.
+  std::ifstream in(std::string(SWARMDESIGN_SOURCE_DIR) + "/missions/aac.json");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string mission = text.str();
+  mission.replace(mission.find("\"name\": \"aac\""), 13, "\"name\": \"my-aac\"");
+  std::filesystem::create_directories(home() / "missions");
+  std::ofstream(home() / "missions" / "my-aac.json") << mission;
+  run_ok({"set-mission"}, "my-aac\n");
+  EXPECT_EQ(query("SELECT mission FROM projects"), "my-aac");
 }
 
 TEST_F(workflow_projects, TheThesisSpellingsWork) {
