@@ -1,6 +1,7 @@
 #pragma once
 // Control software as data: a probabilistic finite-state machine (and, with the Maple
 // flavour, a behaviour tree) whose nodes are module instances from the catalogue.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,9 @@ struct ControlSoftware {
   Architecture architecture = Architecture::Fsm;
   Fsm fsm;
   bool operator==(const ControlSoftware&) const = default;
+
+  /// Union of the Input bits of every module it uses.
+  std::uint8_t inputs() const;
 };
 
 }  // namespace sd

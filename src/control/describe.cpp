@@ -4,6 +4,16 @@
 
 namespace sd {
 
+std::uint8_t ControlSoftware::inputs() const {
+  std::uint8_t bits = 0;
+  for (const FsmState& state : fsm.states) {
+    if (const ModuleSpec* b = find_module(ModuleKind::Behaviour, state.behaviour.id)) bits |= b->inputs;
+    for (const FsmTransition& t : state.transitions)
+      if (const ModuleSpec* c = find_module(ModuleKind::Condition, t.condition.id)) bits |= c->inputs;
+  }
+  return bits;
+}
+
 std::string describe_module(const ModuleInstance& module, ModuleKind kind) {
   const ModuleSpec* spec = find_module(kind, module.id);
   if (!spec) return "unknown(" + std::to_string(module.id) + ")";

@@ -13,6 +13,12 @@ Simulation::Simulation(const Mission& mission, const ControlSoftware& software)
   swarm_.resize(mission.robots);
   physics_.reset(mission.robots);
   reference_.resize(static_cast<std::size_t>(mission.robots));
+  const std::uint8_t inputs = software_.inputs();
+  sensors_.proximity = inputs & kProximityInput;
+  sensors_.light = inputs & kLightInput;
+  sensors_.ground = inputs & kGroundInput;
+  sensors_.range_and_bearing = inputs & kRangeAndBearingInput;
+  sensors_.camera = inputs & kCameraInput;
 }
 
 void Simulation::reset(std::uint64_t seed) {
@@ -29,7 +35,7 @@ void Simulation::step() {
   ++tick_;
   const Mission& m = *mission_;
   physics_.step(m.arena, swarm_);
-  sense(m.arena, m.robot, swarm_, rng_);
+  sense(m.arena, m.robot, swarm_, rng_, sensors_);
   const double wheel_noise = m.robot.wheel_noise;
   for (int i = 0; i < swarm_.size; ++i) {
     const auto r = static_cast<std::size_t>(i);

@@ -14,6 +14,7 @@
 #include "missions/objective.hpp"
 #include "robot/reference_model.hpp"
 #include "simulator/physics.hpp"
+#include "simulator/sensors.hpp"
 #include "simulator/swarm.hpp"
 
 namespace sd {
@@ -54,6 +55,7 @@ class Simulation {
   SwarmController controller_;
   ObjectiveTracker objective_;
   Rng rng_;
+  SensorSet sensors_;
   int tick_ = 0;
 };
 

@@ -18,26 +18,26 @@ ParameterSpec real(std::string token, double lo, double hi, std::string meaning)
 std::vector<ModuleSpec> build_behaviours() {
   std::vector<ModuleSpec> b;
   // Chocolate (RM1.2, ARGoS3-AutoMoDe master).
-  b.push_back({10, ModuleKind::Behaviour, "Exploration", {integer("rwm", 1, 100, "random-walk turn length bound (steps)")}});
-  b.push_back({11, ModuleKind::Behaviour, "Stop", {}});
-  b.push_back({12, ModuleKind::Behaviour, "Phototaxis", {}});
-  b.push_back({13, ModuleKind::Behaviour, "Anti-phototaxis", {}});
-  b.push_back({14, ModuleKind::Behaviour, "Attraction", {real("att", 1, 5, "attraction to neighbours (truncated to an integer)")}});
-  b.push_back({15, ModuleKind::Behaviour, "Repulsion", {real("rep", 1, 5, "repulsion from neighbours (truncated to an integer)")}});
+  b.push_back({10, ModuleKind::Behaviour, "Exploration", {integer("rwm", 1, 100, "random-walk turn length bound (steps)")}, kProximityInput});
+  b.push_back({11, ModuleKind::Behaviour, "Stop", {}, 0});
+  b.push_back({12, ModuleKind::Behaviour, "Phototaxis", {}, kLightInput | kProximityInput});
+  b.push_back({13, ModuleKind::Behaviour, "Anti-phototaxis", {}, kLightInput | kProximityInput});
+  b.push_back({14, ModuleKind::Behaviour, "Attraction", {real("att", 1, 5, "attraction to neighbours (truncated to an integer)")}, kRangeAndBearingInput | kProximityInput});
+  b.push_back({15, ModuleKind::Behaviour, "Repulsion", {real("rep", 1, 5, "repulsion from neighbours (truncated to an integer)")}, kRangeAndBearingInput | kProximityInput});
   return b;
 }
 
 std::vector<ModuleSpec> build_conditions() {
   std::vector<ModuleSpec> c;
   const auto probability = [] { return real("p", 0, 1, "probability of firing"); };
-  c.push_back({10, ModuleKind::Condition, "BlackFloor", {probability()}});
-  c.push_back({11, ModuleKind::Condition, "GrayFloor", {probability()}});
-  c.push_back({12, ModuleKind::Condition, "WhiteFloor", {probability()}});
+  c.push_back({10, ModuleKind::Condition, "BlackFloor", {probability()}, kGroundInput});
+  c.push_back({11, ModuleKind::Condition, "GrayFloor", {probability()}, kGroundInput});
+  c.push_back({12, ModuleKind::Condition, "WhiteFloor", {probability()}, kGroundInput});
   c.push_back({13, ModuleKind::Condition, "NeighborsCount",
-               {integer("p", 1, 10, "neighbour threshold xi"), real("w", 0, 20, "steepness eta")}});
+               {integer("p", 1, 10, "neighbour threshold xi"), real("w", 0, 20, "steepness eta")}, kRangeAndBearingInput});
   c.push_back({14, ModuleKind::Condition, "InvertedNeighborsCount",
-               {integer("p", 1, 10, "neighbour threshold xi"), real("w", 0, 20, "steepness eta")}});
-  c.push_back({15, ModuleKind::Condition, "FixedProbability", {probability()}});
+               {integer("p", 1, 10, "neighbour threshold xi"), real("w", 0, 20, "steepness eta")}, kRangeAndBearingInput});
+  c.push_back({15, ModuleKind::Condition, "FixedProbability", {probability()}, 0});
   return c;
 }
 

@@ -32,11 +32,21 @@ struct ParameterSpec {
 
 inline constexpr int kMaxModuleParameters = 4;
 
+/// The inputs a module reads, so that a run simulates only the sensors it needs.
+enum Input : std::uint8_t {
+  kProximityInput = 1,
+  kLightInput = 2,
+  kGroundInput = 4,
+  kRangeAndBearingInput = 8,
+  kCameraInput = 16,
+};
+
 struct ModuleSpec {
   int id;                        // two-digit id
   ModuleKind kind;
   std::string name;
   std::vector<ParameterSpec> parameters;
+  std::uint8_t inputs = 0;       // Input bits
 
   Flavour flavour() const { return static_cast<Flavour>(id / 10); }
   int digit() const { return id % 10; }

@@ -20,6 +20,11 @@ void Physics::reset(int robots) {
   const auto n = static_cast<std::size_t>(robots);
   target_velocity_.assign(n, {});
   target_angular_.assign(n, 0.0);
+  island_.assign(n, 0);
+  moving_.assign(n, 0);
+  in_contact_.assign(n, 0);
+  contact_robots_.clear();
+  contact_robots_.reserve(n);
   for (auto* v : {&pair_candidates_, &wall_candidates_}) {
     v->clear();
     v->reserve(n * (n - 1) / 2 + 8 * n);
@@ -43,9 +48,7 @@ void Physics::step(const ArenaModel& arena, SwarmState& swarm) {
     max_speed = std::max({max_speed, std::abs(v), swarm.velocity[i].length()});
   }
 
-  // Contact candidates: everything that could touch within this tick. Two robots at rest
-  // stay candidates (a third may push one into the other), but the solver skips them while
-  // both stay still, which is most of an aggregated swarm.
+  // Contact candidates: everything that could touch within this tick.
   const double reach = max_speed * epuck::kTickSeconds + 1e-3;
   pair_candidates_.clear();
   const double pair_limit = 2.0 * kRadius + 2.0 * reach;
@@ -59,24 +62,76 @@ void Physics::step(const ArenaModel& arena, SwarmState& swarm) {
       if (arena.walls[w].distance(swarm.position[i], nullptr) < kRadius + reach)
         wall_candidates_.push_back({static_cast<std::uint16_t>(i), w});
 
-  for (int sub = 0; sub < epuck::kPhysicsSubsteps; ++sub) {
-    for (int i = 0; i < n; ++i) {
-      Vec2 dv = target_velocity_[i] - swarm.velocity[i];
-      const double len2 = dv.squared_length();
-      if (len2 > kMaxDeltaV * kMaxDeltaV) dv = dv * (kMaxDeltaV / std::sqrt(len2));
-      swarm.velocity[i] += dv;
+  // Islands of robots linked by candidate contacts. An island whose robots are all at rest
+  // (no velocity, no command) cannot move during this tick, and a robot with no candidate
+  // moves freely: only robots of moving islands need the sub-stepped contact solver.
+  for (int i = 0; i < n; ++i) {
+    island_[i] = static_cast<std::uint16_t>(i);
+    moving_[i] = 0;
+    in_contact_[i] = 0;
+  }
+  for (const Candidate& c : pair_candidates_) {
+    const std::uint16_t ra = find_island(c.a), rb = find_island(c.b);
+    if (ra != rb) island_[ra] = rb;
+    in_contact_[c.a] = in_contact_[c.b] = 1;
+  }
+  for (const Candidate& c : wall_candidates_) in_contact_[c.a] = 1;
+  for (int i = 0; i < n; ++i) {
+    const bool at_rest = swarm.velocity[i].x == 0.0 && swarm.velocity[i].y == 0.0 && target_velocity_[i].x == 0.0 &&
+                         target_velocity_[i].y == 0.0;
+    if (!at_rest) moving_[find_island(static_cast<std::uint16_t>(i))] = 1;
+  }
+  contact_robots_.clear();
+  for (int i = 0; i < n; ++i) {
+    if (in_contact_[i] && moving_[find_island(static_cast<std::uint16_t>(i))])
+      contact_robots_.push_back(static_cast<std::uint16_t>(i));
+    else
+      move_freely(swarm, i);
+  }
+  std::erase_if(pair_candidates_, [&](const Candidate& c) { return !moving_[find_island(c.a)]; });
+  std::erase_if(wall_candidates_, [&](const Candidate& c) { return !moving_[find_island(c.a)]; });
+
+  if (!contact_robots_.empty()) {
+    for (int sub = 0; sub < epuck::kPhysicsSubsteps; ++sub) {
+      for (const std::uint16_t i : contact_robots_) accelerate(swarm.velocity[i], target_velocity_[i]);
+      solve_contacts(arena, swarm, max_speed);
+      for (const std::uint16_t i : contact_robots_) swarm.position[i] += swarm.velocity[i] * kDt;
+      separate_overlaps(arena, swarm);
     }
-    const bool contacts = !pair_candidates_.empty() || !wall_candidates_.empty();
-    if (contacts) solve_contacts(arena, swarm, max_speed);
-    for (int i = 0; i < n; ++i) {
-      swarm.position[i] += swarm.velocity[i] * kDt;
-      swarm.yaw[i] += target_angular_[i] * kDt;
-    }
-    if (contacts) separate_overlaps(arena, swarm);
   }
   for (int i = 0; i < n; ++i) {
-    swarm.yaw[i] = wrap_signed(swarm.yaw[i]);
+    swarm.yaw[i] = wrap_signed(swarm.yaw[i] + target_angular_[i] * epuck::kTickSeconds);
     swarm.heading[i] = {std::cos(swarm.yaw[i]), std::sin(swarm.yaw[i])};
+  }
+}
+
+std::uint16_t Physics::find_island(std::uint16_t i) {
+  while (island_[i] != i) {
+    island_[i] = island_[island_[i]];  // path halving
+    i = island_[i];
+  }
+  return i;
+}
+
+void Physics::accelerate(Vec2& velocity, Vec2 target) {
+  // The drive joint pulls the body's velocity towards the target with at most 1.5 N.
+  Vec2 dv = target - velocity;
+  const double len2 = dv.squared_length();
+  if (len2 > kMaxDeltaV * kMaxDeltaV) dv = dv * (kMaxDeltaV / std::sqrt(len2));
+  velocity += dv;
+}
+
+void Physics::move_freely(SwarmState& swarm, int i) {
+  Vec2& v = swarm.velocity[i];
+  Vec2& p = swarm.position[i];
+  const Vec2 target = target_velocity_[i];
+  for (int sub = 0; sub < epuck::kPhysicsSubsteps; ++sub) {
+    if (v == target) {  // converged: the rest of the tick is a straight line
+      p += v * (kDt * (epuck::kPhysicsSubsteps - sub));
+      return;
+    }
+    accelerate(v, target);
+    p += v * kDt;
   }
 }
 

@@ -40,10 +40,16 @@ class Physics {
     double normal_impulse, tangent_impulse;
   };
   void solve_contacts(const ArenaModel& arena, SwarmState& swarm, double max_speed);
+  std::uint16_t find_island(std::uint16_t robot);
+  static void accelerate(Vec2& velocity, Vec2 target);
+  void move_freely(SwarmState& swarm, int robot);
   void separate_overlaps(const ArenaModel& arena, SwarmState& swarm);
 
   std::vector<Vec2> target_velocity_;
   std::vector<double> target_angular_;
+  std::vector<std::uint16_t> island_;        // union-find parent
+  std::vector<std::uint8_t> moving_, in_contact_;
+  std::vector<std::uint16_t> contact_robots_;
   std::vector<Candidate> pair_candidates_, wall_candidates_;
   std::vector<Contact> pair_contacts_, wall_contacts_;
 };

@@ -68,37 +68,49 @@ void update_pairs(SwarmState& swarm, double neighbour_range) {
 }
 
 void sense_proximity(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng) {
-  const int n = swarm.size;
-  constexpr double kReach = epuck::kProximityRingRadius + epuck::kProximityRange + kRadius;
-  // Robots close enough to be seen: at most 6 discs fit around one within reach... keep 16.
-  std::array<std::uint16_t, 16> close{};
-  for (int i = 0; i < n; ++i) {
+  constexpr double kRing = epuck::kProximityRingRadius;
+  constexpr double kReach = kRing + epuck::kProximityRange + kRadius;
+  for (int i = 0; i < swarm.size; ++i) {
     std::array<double, 8>& reading = swarm.proximity[i];
-    reading.fill(0.0);
-    int close_count = 0;
-    for (const auto& nb : swarm.neighbours_of(i))
-      if (nb.distance_sq < kReach * kReach && close_count < 16) close[close_count++] = nb.other;
-    const Vec2 p = swarm.position[i];
-    const auto walls = arena.walls_near(p);
-    if (close_count > 0 || !walls.empty()) {
-      const double c = swarm.heading[i].x, s = swarm.heading[i].y;
+    std::array<double, 8> best;
+    best.fill(2.0 * epuck::kProximityRange);
+    bool any = false;
+    const Vec2 h = swarm.heading[i];
+    // Other bodies, in the robot's frame: ray k starts at kRing u_k and runs along u_k.
+    for (const auto& nb : swarm.neighbours_of(i)) {
+      if (nb.distance_sq >= kReach * kReach) continue;
+      any = true;
+      const Vec2 c{h.x * nb.delta.x + h.y * nb.delta.y, h.x * nb.delta.y - h.y * nb.delta.x};
+      const double base = nb.distance_sq - kRadius * kRadius + kRing * kRing;
       for (int k = 0; k < 8; ++k) {
-        const Vec2 dir{c * kRays.cos[k] - s * kRays.sin[k], s * kRays.cos[k] + c * kRays.sin[k]};
-        const Vec2 origin = p + dir * epuck::kProximityRingRadius;
-        double best = epuck::kProximityRange + 1.0;
-        for (int m = 0; m < close_count; ++m) {
-          const double t = ray_disc_entry(origin, dir, swarm.position[close[m]], kRadius);
-          if (t >= 0.0 && t < best) best = t;
+        const double along = c.x * kRays.cos[k] + c.y * kRays.sin[k];
+        const double b = kRing - along;         // (origin - centre) . u
+        const double q = base - 2.0 * kRing * along;  // |origin - centre|^2 - r^2
+        if (q <= 0.0) {
+          best[k] = 0.0;  // the sensor point is inside the other body
+          continue;
         }
-        const Vec2 end = origin + dir * epuck::kProximityRange;
-        for (const std::uint16_t w : walls) {
-          const double t = arena.walls[w].segment_entry(origin, end);
-          if (t <= 1.0) best = std::min(best, t * epuck::kProximityRange);
-        }
-        reading[k] = epuck::proximity_reading(best);
+        const double disc = b * b - q;
+        if (disc < 0.0 || b > 0.0) continue;
+        best[k] = std::min(best[k], -b - std::sqrt(disc));
       }
     }
-    for (double& v : reading) v = with_uniform_noise(v, model.proximity_noise, rng);
+    const Vec2 p = swarm.position[i];
+    for (const std::uint16_t w : arena.walls_near(p)) {
+      const Wall& wall = arena.walls[w];
+      if (wall.distance(p, nullptr) > kRing + epuck::kProximityRange) continue;
+      any = true;
+      for (int k = 0; k < 8; ++k) {
+        const Vec2 dir{h.x * kRays.cos[k] - h.y * kRays.sin[k], h.y * kRays.cos[k] + h.x * kRays.sin[k]};
+        const Vec2 origin = p + dir * kRing;
+        const double t = wall.segment_entry(origin, origin + dir * epuck::kProximityRange);
+        if (t <= 1.0) best[k] = std::min(best[k], t * epuck::kProximityRange);
+      }
+    }
+    for (int k = 0; k < 8; ++k) {
+      const double v = any ? epuck::proximity_reading(best[k]) : 0.0;
+      reading[k] = with_uniform_noise(v, model.proximity_noise, rng);
+    }
   }
 }
 
@@ -172,12 +184,15 @@ void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, S
   std::fill(swarm.rab_count.begin(), swarm.rab_count.end(), 0);
   const std::size_t stride = swarm.rab_stride();
   const double range_sq = model.rab_range * model.rab_range;
+  const auto loss_threshold = static_cast<std::uint64_t>(model.rab_loss * 4294967296.0);
   for (const RobotPair& pair : swarm.pairs) {
     if (pair.distance_sq >= range_sq) continue;
     // Loss is drawn first: line of sight is only worth computing for the 15 % of packets
-    // that survive, and the outcome is the same in distribution.
-    const bool a_receives = !rng.bernoulli(model.rab_loss);
-    const bool b_receives = !rng.bernoulli(model.rab_loss);
+    // that survive, and the outcome is the same in distribution. One 64-bit draw gives both
+    // directions' 32-bit Bernoulli draws (ARGoS' resolution).
+    const std::uint64_t bits = rng.next();
+    const bool a_receives = (bits >> 32) >= loss_threshold;
+    const bool b_receives = (bits & 0xffffffffu) >= loss_threshold;
     if (!a_receives && !b_receives) continue;
     const Vec2 pa = swarm.position[pair.a], pb = swarm.position[pair.b];
     // The RAB ray runs at 5.2 cm, below every body's top: any robot or wall on it blocks.
@@ -205,12 +220,12 @@ double neighbour_range(const RobotModel& model) {
   return std::max({model.rab_range, model.camera_range + kRadius, epuck::kProximityRingRadius + epuck::kProximityRange + kRadius});
 }
 
-void sense(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng, SensingOptions) {
+void sense(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng, SensorSet sensors) {
   update_pairs(swarm, neighbour_range(model));
-  sense_range_and_bearing(arena, model, swarm, rng);
-  sense_proximity(arena, model, swarm, rng);
-  sense_light(arena, model, swarm, rng);
-  sense_ground(arena, model, swarm, rng);
+  if (sensors.range_and_bearing) sense_range_and_bearing(arena, model, swarm, rng);
+  if (sensors.proximity) sense_proximity(arena, model, swarm, rng);
+  if (sensors.light) sense_light(arena, model, swarm, rng);
+  if (sensors.ground) sense_ground(arena, model, swarm, rng);
 }
 
 }  // namespace sd

@@ -9,8 +9,10 @@
 
 namespace sd {
 
-struct SensingOptions {
-  bool camera = false;  // only controllers that use colour modules pay for it
+/// The sensors a run simulates: only those the control software reads (ARGoS likewise
+/// skips disabled devices). Which ones a module reads is in the module catalogue.
+struct SensorSet {
+  bool proximity = true, light = true, ground = true, range_and_bearing = true, camera = false;
 };
 
 /// Refreshes the pair table and the neighbour lists (call after physics, before sensing).
@@ -24,7 +26,7 @@ void sense_ground(const ArenaModel& arena, const RobotModel& model, SwarmState& 
 void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng);
 
 /// All of the above, in a fixed order (the order of random draws is part of determinism).
-void sense(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng, SensingOptions options = {});
+void sense(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng, SensorSet sensors = {});
 
 /// Entry distance along a ray (origin, unit direction) into a disc, or a negative value if
 /// the ray misses it. An origin inside the disc gives 0.
