@@ -124,6 +124,8 @@ std::string irace_scenario_text(const IraceScenarioSpec& s) {
   o << "digits = " << s.digits << "\n";
   if (s.seed != 0) o << "seed = " << s.seed << "\n";
   if (s.deterministic) o << "deterministic = 1\n";
+  if (s.nb_iterations > 0) o << "nbIterations = " << s.nb_iterations << "\n";
+  if (s.min_nb_survival > 0) o << "minNbSurvival = " << s.min_nb_survival << "\n";
   return o.str();
 }
 

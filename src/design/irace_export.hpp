@@ -23,6 +23,8 @@ struct IraceScenarioSpec {
   std::uint64_t seed = 0;      // 0: let irace pick
   int digits = 2;
   bool deterministic = false;
+  int nb_iterations = 0;     // 0: irace's default floor(2 + log2 N_param)
+  int min_nb_survival = 0;   // 0: irace's default
   std::string parameter_file = "./parameters.txt";
   std::string instances_file = "./instances.txt";
   std::string target_runner = "./target-runner";

@@ -15,16 +15,6 @@ namespace sd::design {
 
 namespace {
 
-// Exact-match key of a configuration (NA canonicalised) for duplicate and rejection checks.
-std::string key_of(const Configuration& c) {
-  std::string k(c.values.size() * sizeof(double), '\0');
-  for (std::size_t i = 0; i < c.values.size(); ++i) {
-    const double v = is_na(c.values[i]) ? std::numeric_limits<double>::infinity() : c.values[i];
-    std::memcpy(&k[i * sizeof(double)], &v, sizeof(double));
-  }
-  return k;
-}
-
 long long ceil_div(long long a, long long b) { return (a + b - 1) / b; }
 
 // irace round.to.next.multiple
@@ -140,7 +130,7 @@ void IteratedRace::initialise() {
   for (const Configuration& c : options_.initial_configurations) {
     const std::string problem = space_.validate(c);
     if (!problem.empty()) throw std::invalid_argument("initial configuration: " + problem);
-    if (!seen.insert(key_of(c)).second) throw std::invalid_argument("duplicated initial configuration");
+    if (!seen.insert(c.key()).second) throw std::invalid_argument("duplicated initial configuration");
     s.configurations.add(c, 0);
   }
   s.phase = Phase::StartIteration;
@@ -155,6 +145,7 @@ void IteratedRace::restore(DesignState state) {
   results_.clear();
   for (const ExperimentRecord& e : state_.experiments) results_[e.configuration_id][e.position] = e.cost;
   if (state_.race) rebuild_results(*state_.race, state_.race->results.size(), [this](std::size_t p, int id) { return lookup(p, id); });
+  checkpointed_configurations_ = state_.configurations.size();
   checkpointed_experiments_ = state_.experiments.size();
   initialised_ = true;
 }
@@ -193,11 +184,11 @@ void IteratedRace::finish(std::string reason) {
 std::vector<int> IteratedRace::sample_new(std::size_t n, const std::vector<int>& elite_ids, bool uniform) {
   DesignState& s = state_;
   std::unordered_set<std::string> rejected, in_race;
-  for (int id : s.rejected_ids) rejected.insert(key_of(s.configurations[id].config));
-  for (int id : elite_ids) in_race.insert(key_of(s.configurations[id].config));
+  for (int id : s.rejected_ids) rejected.insert(s.configurations[id].config.key());
+  for (int id : elite_ids) in_race.insert(s.configurations[id].config.key());
   int duplicate_tries = 0;
   const Acceptable acceptable = [&](const Configuration& c) {
-    const std::string k = key_of(c);
+    const std::string k = c.key();
     if (rejected.count(k)) return false;
     if (options_.unique_new_configurations && in_race.count(k) && ++duplicate_tries < 50) return false;
     duplicate_tries = 0;
@@ -225,7 +216,7 @@ std::vector<int> IteratedRace::sample_new(std::size_t n, const std::vector<int>&
         restart_model(s.model, space_, model_ids, static_cast<int>(n));
         s.soft_restarts.back() = 1;
         in_race.clear();
-        for (int id : elite_ids) in_race.insert(key_of(s.configurations[id].config));
+        for (int id : elite_ids) in_race.insert(s.configurations[id].config.key());
         fresh = sample_model(space_, s.elites, s.configurations, s.model, n, rng_, acceptable);
       }
     }
@@ -345,7 +336,8 @@ DesignResult IteratedRace::run() {
 
 void IteratedRace::emit_checkpoint() {
   state_.rng = rng_.state();
-  if (checkpoint_) checkpoint_(Checkpoint{state_, checkpointed_experiments_});
+  if (checkpoint_) checkpoint_(Checkpoint{state_, checkpointed_configurations_, checkpointed_experiments_});
+  checkpointed_configurations_ = state_.configurations.size();
   checkpointed_experiments_ = state_.experiments.size();
 }
 

@@ -56,9 +56,13 @@ struct Progress {
   double best_mean = 0.0;          // its mean cost on the instances of this race
 };
 
+/// Handed to the checkpoint hook after every step (iteration start, race task, race end).
+/// state.configurations / state.experiments from the given indices on are new since the last
+/// checkpoint; both are append-only.
 struct Checkpoint {
   const DesignState& state;
-  std::size_t first_new_experiment;  // state.experiments[first_new_experiment..] are new since the last checkpoint
+  std::size_t first_new_configuration;
+  std::size_t first_new_experiment;
 };
 
 struct EliteSummary {
@@ -122,6 +126,7 @@ class IteratedRace {
   DesignState state_;
   Rng rng_;
   bool initialised_ = false;
+  std::size_t checkpointed_configurations_ = 0;
   std::size_t checkpointed_experiments_ = 0;
   std::unordered_map<int, std::map<std::size_t, double>> results_;  // id -> position -> cost
   std::function<void(const Checkpoint&)> checkpoint_;

@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <functional>
 #include <map>
 #include <stdexcept>
@@ -62,6 +63,15 @@ bool Configuration::operator==(const Configuration& o) const {
     if (a != b || (!a && values[i] != o.values[i])) return false;
   }
   return true;
+}
+
+std::string Configuration::key() const {
+  std::string k(values.size() * sizeof(double), '\0');
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const double v = is_na(values[i]) ? std::numeric_limits<double>::infinity() : values[i];
+    std::memcpy(&k[i * sizeof(double)], &v, sizeof(double));
+  }
+  return k;
 }
 
 std::size_t ParameterSpace::add(Parameter p) {

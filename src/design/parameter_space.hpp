@@ -61,6 +61,8 @@ struct Parameter {
 struct Configuration {
   std::vector<double> values;
   bool operator==(const Configuration& o) const;  // NA equals NA
+  /// Bytes identifying the configuration exactly (NA canonicalised), for hash sets.
+  std::string key() const;
 };
 
 class ParameterSpace {

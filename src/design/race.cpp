@@ -5,6 +5,7 @@
 #include <limits>
 #include <numeric>
 #include <set>
+#include <unordered_set>
 #include <stdexcept>
 
 #include "design/statistics.hpp"
@@ -297,11 +298,9 @@ std::vector<Elite> extract_elites(const RaceResult& result, const ConfigurationS
     if (result.alive[i]) alive.push_back({result.ids[i], result.ranks[i]});
   std::sort(alive.begin(), alive.end(), [](const Candidate& a, const Candidate& b) { return a.id < b.id; });
   std::vector<Candidate> unique;
-  for (const Candidate& c : alive) {
-    const bool dup = std::any_of(unique.begin(), unique.end(),
-                                 [&](const Candidate& u) { return store[u.id].config == store[c.id].config; });
-    if (!dup) unique.push_back(c);
-  }
+  std::unordered_set<std::string> seen;
+  for (const Candidate& c : alive)
+    if (seen.insert(store[c.id].config.key()).second) unique.push_back(c);
   std::stable_sort(unique.begin(), unique.end(), [](const Candidate& a, const Candidate& b) { return a.rank < b.rank; });
   const std::size_t n = std::min(unique.size(), nb_elites);
   std::vector<Elite> elites;

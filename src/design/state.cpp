@@ -104,7 +104,18 @@ RaceState race_from_json(const json& j) {
 
 }  // namespace
 
-json state_to_json(const DesignState& s, bool with_experiments) {
+json record_to_json(const ConfigRecord& r) { return json::array({r.id, r.parent, numbers(r.config.values)}); }
+ConfigRecord config_record_from_json(const json& j) {
+  return {j.at(0).get<int>(), j.at(1).get<int>(), Configuration{numbers(j.at(2))}};
+}
+json record_to_json(const ExperimentRecord& r) {
+  return json::array({r.iteration, r.position, r.configuration_id, number(r.cost)});
+}
+ExperimentRecord experiment_record_from_json(const json& j) {
+  return {j.at(0).get<int>(), j.at(1).get<std::size_t>(), j.at(2).get<int>(), number(j.at(3))};
+}
+
+json state_to_json(const DesignState& s, bool with_history) {
   json j;
   j["format"] = "swarmdesign-irace-state";
   j["version"] = kFormatVersion;
@@ -119,9 +130,12 @@ json state_to_json(const DesignState& s, bool with_experiments) {
   j["current_budget"] = s.current_budget;
   j["nb_configurations"] = s.nb_configurations;
   j["first_race"] = s.first_race;
-  json confs = json::array();
-  for (const ConfigRecord& c : s.configurations.all()) confs.push_back({c.id, c.parent, numbers(c.config.values)});
-  j["configurations"] = std::move(confs);
+  j["configuration_count"] = s.configurations.size();
+  if (with_history) {
+    json confs = json::array();
+    for (const ConfigRecord& c : s.configurations.all()) confs.push_back(record_to_json(c));
+    j["configurations"] = std::move(confs);
+  }
   j["rejected_ids"] = s.rejected_ids;
   json elites = json::array();
   for (const Elite& e : s.elites) elites.push_back({e.id, e.weight});
@@ -141,9 +155,9 @@ json state_to_json(const DesignState& s, bool with_experiments) {
                     {"blocks", s.instances.blocks()}};
   j["positions_seen"] = s.positions_seen;
   j["experiment_count"] = s.experiments.size();
-  if (with_experiments) {
+  if (with_history) {
     json log = json::array();
-    for (const ExperimentRecord& e : s.experiments) log.push_back({e.iteration, e.position, e.configuration_id, number(e.cost)});
+    for (const ExperimentRecord& e : s.experiments) log.push_back(record_to_json(e));
     j["experiments"] = std::move(log);
   }
   j["race"] = s.race ? race_to_json(*s.race) : json(nullptr);
@@ -152,7 +166,7 @@ json state_to_json(const DesignState& s, bool with_experiments) {
   return j;
 }
 
-DesignState state_from_json(const json& j, std::optional<std::vector<ExperimentRecord>> experiments) {
+DesignState state_from_json(const json& j, std::optional<History> history) {
   try {
     if (j.value("format", "") != "swarmdesign-irace-state") throw std::runtime_error("not a SwarmDesign design state");
     if (j.at("version").get<int>() != kFormatVersion) throw std::runtime_error("unsupported design-state version");
@@ -168,9 +182,18 @@ DesignState state_from_json(const json& j, std::optional<std::vector<ExperimentR
     j.at("current_budget").get_to(s.current_budget);
     j.at("nb_configurations").get_to(s.nb_configurations);
     j.at("first_race").get_to(s.first_race);
-    for (const auto& c : j.at("configurations")) {
-      const int id = s.configurations.add(Configuration{numbers(c.at(2))}, c.at(1).get<int>());
-      if (id != c.at(0).get<int>()) throw std::runtime_error("configuration ids are not consecutive");
+    std::vector<ConfigRecord> configurations;
+    if (history) {
+      configurations = std::move(history->configurations);
+    } else {
+      for (const auto& c : j.at("configurations")) configurations.push_back(config_record_from_json(c));
+    }
+    if (configurations.size() != j.at("configuration_count").get<std::size_t>())
+      throw std::runtime_error("the configurations do not match the state (" + std::to_string(configurations.size()) +
+                               ", expected " + std::to_string(j.at("configuration_count").get<std::size_t>()) + ")");
+    for (auto& c : configurations) {
+      const int id = s.configurations.add(std::move(c.config), c.parent);
+      if (id != c.id) throw std::runtime_error("configuration ids are not consecutive");
     }
     j.at("rejected_ids").get_to(s.rejected_ids);
     for (const auto& e : j.at("elites")) s.elites.push_back({e.at(0).get<int>(), e.at(1).get<double>()});
@@ -184,11 +207,10 @@ DesignState state_from_json(const json& j, std::optional<std::vector<ExperimentR
     s.instances = InstanceList::replay(in.at("n_instances").get<std::size_t>(), in.at("stream_seed").get<std::uint64_t>(),
                                        in.at("sample_instances").get<bool>(), in.at("blocks").get<std::size_t>());
     j.at("positions_seen").get_to(s.positions_seen);
-    if (experiments) {
-      s.experiments = std::move(*experiments);
+    if (history) {
+      s.experiments = std::move(history->experiments);
     } else {
-      for (const auto& e : j.at("experiments"))
-        s.experiments.push_back({e.at(0).get<int>(), e.at(1).get<std::size_t>(), e.at(2).get<int>(), number(e.at(3))});
+      for (const auto& e : j.at("experiments")) s.experiments.push_back(experiment_record_from_json(e));
     }
     if (s.experiments.size() != j.at("experiment_count").get<std::size_t>())
       throw std::runtime_error("the experiment log does not match the state (" + std::to_string(s.experiments.size()) +

@@ -47,11 +47,25 @@ struct DesignState {
   std::string finish_reason;
 };
 
-/// `with_experiments = false` leaves out the experiment log (which the caller can store
-/// incrementally: it is append-only) and the race's result table (rebuilt from the log).
-nlohmann::json state_to_json(const DesignState& state, bool with_experiments = true);
-/// `experiments`: the log when the JSON was written without it. Throws std::runtime_error on a
-/// malformed document.
-DesignState state_from_json(const nlohmann::json& j, std::optional<std::vector<ExperimentRecord>> experiments = {});
+/// The append-only part of a state: every configuration and every result. A caller that
+/// checkpoints often stores it incrementally (Checkpoint tells what is new) and writes the rest
+/// with state_to_json(state, false), which stays small (tens of kB) whatever the budget.
+struct History {
+  std::vector<ConfigRecord> configurations;
+  std::vector<ExperimentRecord> experiments;
+};
+
+/// `with_history = false` leaves out configurations and experiments (their counts are kept to
+/// check the history handed back on restore). The race's result table is never written: it is
+/// rebuilt from the experiments.
+nlohmann::json state_to_json(const DesignState& state, bool with_history = true);
+/// `history`: required when the JSON was written without it. Throws std::runtime_error on a
+/// malformed document or a history that does not match.
+DesignState state_from_json(const nlohmann::json& j, std::optional<History> history = {});
+
+nlohmann::json record_to_json(const ConfigRecord& r);  // [id, parent, [values, null = NA]]
+ConfigRecord config_record_from_json(const nlohmann::json& j);
+nlohmann::json record_to_json(const ExperimentRecord& r);  // [iteration, position, id, cost]
+ExperimentRecord experiment_record_from_json(const nlohmann::json& j);
 
 }  // namespace sd::design

@@ -42,7 +42,7 @@ std::string trim(std::string s) {
 
 }  // namespace
 
-TEST(IraceExport, ParameterFileText) {
+TEST(design_IraceExport, ParameterFileText) {
   const ParameterSpace s = build_fsm_space(chocolate_fsm_modules());
   const std::string text = irace_parameters_text(s);
   EXPECT_NE(text.find("ARCH\t\"--\"\tc\t(\"fsm-config\")\n"), std::string::npos);
@@ -55,7 +55,7 @@ TEST(IraceExport, ParameterFileText) {
   EXPECT_NE(runner.find("MISSION='aac'"), std::string::npos);
 }
 
-TEST(IraceExport, TargetRunnerPrintsTheNegatedScore) {
+TEST(design_IraceExport, TargetRunnerPrintsTheNegatedScore) {
   const fs::path dir = fresh_dir("runner");
   const fs::path stub = dir / "fake-swarmdesign";
   {
@@ -78,7 +78,7 @@ TEST(IraceExport, TargetRunnerPrintsTheNegatedScore) {
   fs::remove_all(dir);
 }
 
-TEST(IraceExport, IraceReadsTheParametersAndItsSamplesParseBack) {
+TEST(design_IraceExport, IraceReadsTheParametersAndItsSamplesParseBack) {
   if (!have_rscript()) GTEST_SKIP() << "Rscript with irace not installed";
   const ParameterSpace s = build_fsm_space(chocolate_fsm_modules());
   const fs::path dir = fresh_dir("params");
@@ -115,5 +115,41 @@ TEST(IraceExport, IraceReadsTheParametersAndItsSamplesParseBack) {
   EXPECT_TRUE(read_nbvar) << out;
   EXPECT_EQ(configurations, 300) << out;
   for (int n = 1; n <= 4; ++n) EXPECT_GT(states[static_cast<std::size_t>(n)], 30);
+  fs::remove_all(dir);
+}
+
+TEST(design_IraceExport, IraceRunsThroughTheExportedFiles) {
+  if (!have_rscript()) GTEST_SKIP() << "Rscript with irace not installed";
+  const fs::path dir = fresh_dir("run");
+  const fs::path stub = dir / "fake-swarmdesign";
+  {
+    // Stands in for `swarmdesign evaluate`: the score is the number of states plus seed noise,
+    // so a maximising design must end with 4 states.
+    std::ofstream f(stub);
+    f << "#!/bin/bash\n"
+         "[ \"$1\" = evaluate ] && [ \"$2\" = --mission ] && [ \"$4\" = --seed ] || { echo bad call; exit 1; }\n"
+         "shift 5\n"
+         "[ \"$1\" = --fsm-config ] || { echo 'no --fsm-config'; exit 1; }\n"
+         "while [ $# -gt 0 ]; do [ \"$1\" = --nstates ] && N=$2; shift; done\n"
+         "echo \"Score $N.$((RANDOM % 10))\"\n";
+  }
+  fs::permissions(stub, fs::perms::owner_all);
+  const ParameterSpace s = build_fsm_space(chocolate_fsm_modules());
+  IraceScenarioSpec scenario{.max_experiments = 150, .seed = 3};
+  scenario.nb_iterations = 2;
+  scenario.min_nb_survival = 2;
+  write_irace_files(dir, s, scenario, {"aac"}, {stub.string(), "aac", true});
+  const std::string out =
+      run("cd " + dir.string() + " && Rscript -e 'irace::irace.cmdline(c(\"--scenario\", \"scenario.txt\"))' 2>&1");
+  const auto at = out.find("# Best configurations as commandlines");
+  ASSERT_NE(at, std::string::npos) << out;
+  std::istringstream lines(out.substr(at));
+  std::string line;
+  std::getline(lines, line);
+  ASSERT_TRUE(std::getline(lines, line)) << out;
+  const std::string cmd = line.substr(line.find("--"));
+  Configuration best;
+  ASSERT_NO_THROW(best = s.parse(cmd)) << cmd;
+  EXPECT_EQ(best.values[*s.index_of("NumStates")], 4) << cmd;
   fs::remove_all(dir);
 }

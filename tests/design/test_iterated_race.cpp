@@ -52,7 +52,7 @@ struct CountingRunner final : ExperimentRunner {
 
 }  // namespace
 
-TEST(IteratedRace, BudgetFormulasMatchIrace) {
+TEST(design_IteratedRace, BudgetFormulasMatchIrace) {
   EXPECT_EQ(default_nb_iterations(1), 2);
   EXPECT_EQ(default_nb_iterations(11), 5);
   EXPECT_EQ(default_nb_iterations(101), 8);
@@ -71,14 +71,14 @@ TEST(IteratedRace, BudgetFormulasMatchIrace) {
   EXPECT_EQ(minimum_budget(o, 5, 5), 6 * 5 * 10);
 }
 
-TEST(IteratedRace, RejectsAnInsufficientBudget) {
+TEST(design_IteratedRace, RejectsAnInsufficientBudget) {
   const ParameterSpace s = synthetic_space();
   ThreadedRunner runner(synthetic_cost, 1);
   IteratedRace design(s, options(100, 1), runner);  // N_iter 4, minSurv 4 -> needs 180
   EXPECT_THROW(design.run(), std::invalid_argument);
 }
 
-TEST(IteratedRace, FindsTheOptimumOfASyntheticObjective) {
+TEST(design_IteratedRace, FindsTheOptimumOfASyntheticObjective) {
   const ParameterSpace s = synthetic_space();
   ThreadedRunner runner(synthetic_cost, 2);
   IteratedRace design(s, options(3000, 1), runner);
@@ -109,7 +109,7 @@ TEST(IteratedRace, FindsTheOptimumOfASyntheticObjective) {
     for (std::size_t b = a + 1; b < r.elites.size(); ++b) EXPECT_FALSE(r.elites[a].configuration == r.elites[b].configuration);
 }
 
-TEST(IteratedRace, ResultDoesNotDependOnTheThreadCount) {
+TEST(design_IteratedRace, ResultDoesNotDependOnTheThreadCount) {
   const ParameterSpace space = build_fsm_space(chocolate_fsm_modules());
   // A cheap stand-in for a mission: prefer 3 states, attraction in state 0, and p close to 0.7.
   auto cost = [&](const Experiment& e) {
@@ -144,14 +144,19 @@ TEST(IteratedRace, ResultDoesNotDependOnTheThreadCount) {
   EXPECT_EQ(state_to_json(one).dump(), state_to_json(two).dump());
 }
 
-TEST(IteratedRace, ResumingFromAnyCheckpointGivesTheSameResult) {
+TEST(design_IteratedRace, ResumingFromAnyCheckpointGivesTheSameResult) {
   const ParameterSpace s = synthetic_space();
   std::vector<nlohmann::json> checkpoints;
   std::vector<std::size_t> evaluated_at;
   CountingRunner full_runner;
   IteratedRace full(s, options(1200, 9), full_runner);
+  std::size_t configurations_seen = 0, experiments_seen = 0;
   full.on_checkpoint([&](const Checkpoint& c) {
-    EXPECT_LE(c.first_new_experiment, c.state.experiments.size());
+    // The new-record indices tile the history without gaps or overlaps.
+    EXPECT_EQ(c.first_new_configuration, configurations_seen);
+    EXPECT_EQ(c.first_new_experiment, experiments_seen);
+    configurations_seen = c.state.configurations.size();
+    experiments_seen = c.state.experiments.size();
     checkpoints.push_back(state_to_json(c.state, checkpoints.size() % 2 == 0));
     evaluated_at.push_back(full_runner.evaluated);
   });
@@ -160,13 +165,17 @@ TEST(IteratedRace, ResumingFromAnyCheckpointGivesTheSameResult) {
   ASSERT_GT(checkpoints.size(), 20u);
   const std::size_t n = checkpoints.size();
   for (std::size_t k : {std::size_t{0}, std::size_t{1}, std::size_t{2}, std::size_t{7}, n / 3, n / 2 + 1, n - 2}) {
-    // Odd checkpoints were written without the log: hand it over separately, as SQLite would.
-    std::optional<std::vector<ExperimentRecord>> log;
-    if (k % 2 == 1)
-      log = std::vector<ExperimentRecord>(full.state().experiments.begin(),
-                                          full.state().experiments.begin() +
-                                              checkpoints[k]["experiment_count"].get<std::ptrdiff_t>());
-    DesignState restored = state_from_json(nlohmann::json::parse(checkpoints[k].dump()), log);
+    // Odd checkpoints were written without history: hand it over separately, as a database
+    // that stores the new records of every checkpoint would.
+    std::optional<History> history;
+    if (k % 2 == 1) {
+      history.emplace();
+      const auto& all = full.state().configurations.all();
+      const auto& log = full.state().experiments;
+      history->configurations.assign(all.begin(), all.begin() + checkpoints[k]["configuration_count"].get<std::ptrdiff_t>());
+      history->experiments.assign(log.begin(), log.begin() + checkpoints[k]["experiment_count"].get<std::ptrdiff_t>());
+    }
+    DesignState restored = state_from_json(nlohmann::json::parse(checkpoints[k].dump()), history);
     CountingRunner runner;
     IteratedRace resumed(s, options(1200, 9), runner);
     resumed.restore(std::move(restored));
@@ -178,7 +187,7 @@ TEST(IteratedRace, ResumingFromAnyCheckpointGivesTheSameResult) {
   }
 }
 
-TEST(IteratedRace, RefusesAForeignCheckpoint) {
+TEST(design_IteratedRace, RefusesAForeignCheckpoint) {
   const ParameterSpace s = synthetic_space();
   ThreadedRunner runner(synthetic_cost, 1);
   IteratedRace a(s, options(600, 1), runner);
@@ -189,9 +198,11 @@ TEST(IteratedRace, RefusesAForeignCheckpoint) {
   broken.erase("model");
   EXPECT_THROW(state_from_json(broken), std::runtime_error);
   EXPECT_THROW(state_from_json(nlohmann::json{{"hello", 1}}), std::runtime_error);
+  // A history that does not match the state is refused.
+  EXPECT_THROW(state_from_json(state_to_json(a.state(), false), History{}), std::runtime_error);
 }
 
-TEST(IteratedRace, InitialConfigurationsAreRacedFirst) {
+TEST(design_IteratedRace, InitialConfigurationsAreRacedFirst) {
   const ParameterSpace s = synthetic_space();
   ThreadedRunner runner(synthetic_cost, 1);
   IraceOptions o = options(600, 3);

@@ -21,7 +21,7 @@ const char* kExample =
 
 }  // namespace
 
-TEST(FsmSpace, ChocolateHasTheGrammarStructure) {
+TEST(design_FsmSpace, ChocolateHasTheGrammarStructure) {
   const ParameterSpace& s = chocolate();
   // ARCH (fixed) + NumStates + 4 x (S, RWM, ATT, REP, NumConnections) + 16 x (N, C, P, B, W)
   EXPECT_EQ(s.size(), 102u);
@@ -42,7 +42,7 @@ TEST(FsmSpace, ChocolateHasTheGrammarStructure) {
   EXPECT_LT(rank[*s.index_of("C0x0")], rank[*s.index_of("P0x0")]);
 }
 
-TEST(FsmSpace, ParsesAndRendersTheSpecExample) {
+TEST(design_FsmSpace, ParsesAndRendersTheSpecExample) {
   const ParameterSpace& s = chocolate();
   const Configuration c = s.parse(kExample);
   EXPECT_EQ(s.validate(c), "");
@@ -60,7 +60,7 @@ TEST(FsmSpace, ParsesAndRendersTheSpecExample) {
   EXPECT_EQ(shuffled, c);
 }
 
-TEST(FsmSpace, RejectsMalformedStringsNamingTheToken) {
+TEST(design_FsmSpace, RejectsMalformedStringsNamingTheToken) {
   const ParameterSpace& s = chocolate();
   auto message = [&](const std::string& text) {
     try {
@@ -83,7 +83,7 @@ TEST(FsmSpace, RejectsMalformedStringsNamingTheToken) {
   EXPECT_NE(message("--fsm-config --nstates 1 --s0 11 --s0 12").find("repeated"), std::string::npos);
 }
 
-TEST(ParameterSpace, ConditionsAndDependentDomains) {
+TEST(design_ParameterSpace, ConditionsAndDependentDomains) {
   ParameterSpace s(2);
   s.add({"A", "--a ", ParamType::Categorical, {"x", "y", "z"}, {}, {}, false, {}});
   s.add({"N", "--n ", ParamType::Integer, {}, Bound::fixed(1), Bound::fixed(4), false, {}});
@@ -106,7 +106,7 @@ TEST(ParameterSpace, ConditionsAndDependentDomains) {
   EXPECT_EQ(s.round_real(3.14159), 3.14);
 }
 
-TEST(ParameterSpace, RejectsCyclesAndUnknownNames) {
+TEST(design_ParameterSpace, RejectsCyclesAndUnknownNames) {
   ParameterSpace cyc;
   cyc.add({"A", "--a ", ParamType::Integer, {}, Bound::fixed(0), Bound::fixed(3), false, {{"B", Clause::Op::Gt, {}, 0}}});
   cyc.add({"B", "--b ", ParamType::Integer, {}, Bound::fixed(0), Bound::fixed(3), false, {{"A", Clause::Op::Gt, {}, 0}}});

@@ -26,7 +26,7 @@ double noisy_cost(const Experiment& e) {
 
 }  // namespace
 
-TEST(Race, KeepsTheBestOfConfigurationsWithKnownMeans) {
+TEST(design_Race, KeepsTheBestOfConfigurationsWithKnownMeans) {
   const ParameterSpace s = one_real();
   ConfigurationStore store;
   std::vector<int> ids;
@@ -59,7 +59,7 @@ TEST(Race, KeepsTheBestOfConfigurationsWithKnownMeans) {
   EXPECT_EQ(*positions.rbegin(), positions.size());
 }
 
-TEST(Race, EliteIsProtectedUntilItHasSeenItsOldInstances) {
+TEST(design_Race, EliteIsProtectedUntilItHasSeenItsOldInstances) {
   const ParameterSpace s = one_real();
   ConfigurationStore store;
   std::vector<int> ids;
@@ -101,7 +101,7 @@ TEST(Race, EliteIsProtectedUntilItHasSeenItsOldInstances) {
     }
 }
 
-TEST(Race, ImmediateRejectionOnInfiniteCost) {
+TEST(design_Race, ImmediateRejectionOnInfiniteCost) {
   const ParameterSpace s = one_real();
   ConfigurationStore store;
   std::vector<int> ids;
@@ -121,7 +121,7 @@ TEST(Race, ImmediateRejectionOnInfiniteCost) {
   EXPECT_EQ(finish_race(state).rejected_ids, (std::vector<int>{ids[2]}));
 }
 
-TEST(Race, OverallRanksPreferMoreInstances) {
+TEST(design_Race, OverallRanksPreferMoreInstances) {
   const double na = std::nan("");
   // Column 2 has the lowest costs but only 3 results: it ranks after columns 0 and 1.
   const std::vector<std::vector<double>> results{{5, 4, 0}, {5, 4, 0}, {3, 4, 0}, {5, 4, na}, {5, 4, na}};
@@ -129,7 +129,7 @@ TEST(Race, OverallRanksPreferMoreInstances) {
   EXPECT_EQ(r, (std::vector<double>{9, 6, 10}));  // rank sums 9 and 6, then 6 + 1 + ... = max + 1
 }
 
-TEST(Race, ExtractElitesDropsDuplicatesAndWeightsByRank) {
+TEST(design_Race, ExtractElitesDropsDuplicatesAndWeightsByRank) {
   const ParameterSpace s = one_real();
   ConfigurationStore store;
   store.add(s.parse("--x 1"), 0);

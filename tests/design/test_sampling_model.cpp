@@ -38,7 +38,7 @@ double truncated_mean(double mu, double sd, double lo, double hi) {
 
 }  // namespace
 
-TEST(Sampling, TruncatedNormalStaysInBoundsWithTheRightMean) {
+TEST(design_Sampling, TruncatedNormalStaysInBoundsWithTheRightMean) {
   sd::Rng rng(7);
   // One case per proposal of Robert's sampler: normal, exponential (lower / upper tail), uniform.
   const double cases[][4] = {{0, 1, -1, 2}, {0, 1, 1.5, 6}, {0, 1, -6, -2}, {0, 1, 0.2, 0.6}, {5, 2, 4.5, 5}};
@@ -55,7 +55,7 @@ TEST(Sampling, TruncatedNormalStaysInBoundsWithTheRightMean) {
   }
 }
 
-TEST(Sampling, UniformFsmSamplesAreValidAndRoundTrip) {
+TEST(design_Sampling, UniformFsmSamplesAreValidAndRoundTrip) {
   const ParameterSpace& s = chocolate();
   sd::Rng rng(11);
   const std::size_t n0x0 = *s.index_of("N0x0");
@@ -75,7 +75,7 @@ TEST(Sampling, UniformFsmSamplesAreValidAndRoundTrip) {
   for (int ns = 1; ns <= 4; ++ns) EXPECT_GT(states_seen[static_cast<std::size_t>(ns)], 400) << ns;
 }
 
-TEST(Model, InitialiseUpdateRestartMatchIrace) {
+TEST(design_Model, InitialiseUpdateRestartMatchIrace) {
   const ParameterSpace s = small_space();
   ConfigurationStore store;
   // R: confs 1 = (x, 3, 2.5, mid, 1), 2 = (z, 1, NA, top, NA); elite 3 = (y, 4, 7.25, lo, 2), parent 1
@@ -111,7 +111,7 @@ TEST(Model, InitialiseUpdateRestartMatchIrace) {
   EXPECT_EQ(r.at(2, 0), u.at(2, 0));                    // untouched
 }
 
-TEST(Model, CategoricalCapAndShrinkOverIterations) {
+TEST(design_Model, CategoricalCapAndShrinkOverIterations) {
   // R (10 parameters: A c("x","y") + R1..R9 r(0,1)): elite 1 with A = x, updateModel for j = 2..6,
   // nbIterations 6, nbNew 10 -> A = 0.989911387895274886 (elitist, capped at 0.2^(1/10) then
   // renormalised), 0.9922839506172839164 (non-elitist); R1 sd = 0.15811388300841894
@@ -134,7 +134,7 @@ TEST(Model, CategoricalCapAndShrinkOverIterations) {
   EXPECT_NEAR(elitist.at(1, 1)[0], 0.15811388300841894, 1e-14);
 }
 
-TEST(Sampling, ModelSamplesConcentrateAroundTheParent) {
+TEST(design_Sampling, ModelSamplesConcentrateAroundTheParent) {
   const ParameterSpace& s = chocolate();
   sd::Rng rng(5);
   ConfigurationStore store;
@@ -160,7 +160,7 @@ TEST(Sampling, ModelSamplesConcentrateAroundTheParent) {
   EXPECT_GT(same_s0, 370);
 }
 
-TEST(Sampling, SimilarConfigurationsTriggerSoftRestart) {
+TEST(design_Sampling, SimilarConfigurationsTriggerSoftRestart) {
   const ParameterSpace s = small_space();
   std::vector<ConfigRecord> race{{1, 0, s.parse("--a x --n 3 --r 2.5 --o mid --d 1")},
                                  {2, 1, s.parse("--a x --n 3 --r 2.5 --o mid --d 1")},

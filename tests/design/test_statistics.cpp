@@ -37,14 +37,14 @@ CostMatrix y3() {
 
 }  // namespace
 
-TEST(Statistics, AverageRanksMatchR) {
+TEST(design_Statistics, AverageRanksMatchR) {
   // R: rank(c(3,1,4,1,5,9,2,6,5,3,5))
   const std::vector<double> x{3, 1, 4, 1, 5, 9, 2, 6, 5, 3, 5};
   const std::vector<double> expected{4.5, 1.5, 6, 1.5, 8, 11, 3, 10, 8, 4.5, 8};
   EXPECT_EQ(average_ranks(x), expected);
 }
 
-TEST(Statistics, FriedmanWithoutTies) {
+TEST(design_Statistics, FriedmanWithoutTies) {
   // R: friedman.test(y) -> 17, 0.00070674239233702875; colSums(t(apply(y,1,rank))) -> 13 6 24 17
   const FriedmanTest f = friedman_test(y1());
   EXPECT_NEAR(f.statistic, 17.0, 1e-12);
@@ -52,7 +52,7 @@ TEST(Statistics, FriedmanWithoutTies) {
   EXPECT_EQ(f.rank_sums, (std::vector<double>{13, 6, 24, 17}));
 }
 
-TEST(Statistics, FriedmanWithTies) {
+TEST(design_Statistics, FriedmanWithTies) {
   // R: friedman.test(y2) -> 11.833333333333334, 0.018634646635166056; rank sums 10.5 12 11.5 19 22
   const FriedmanTest f = friedman_test(y2());
   EXPECT_NEAR(f.statistic, 11.833333333333334, 1e-12);
@@ -60,7 +60,7 @@ TEST(Statistics, FriedmanWithTies) {
   EXPECT_EQ(f.rank_sums, (std::vector<double>{10.5, 12, 11.5, 19, 22}));
 }
 
-TEST(Statistics, ConoverPostHocMatchesIrace) {
+TEST(design_Statistics, ConoverPostHocMatchesIrace) {
   // R: qt(0.975,(n-1)*(k-1)) * sqrt(2*(n*A - sum(R^2))/((n-1)*(k-1))) -> 2.461185937786083;
   //    irace:::aux2.friedman(y, 1:4, rep(TRUE,4), 0.95)$alive -> FALSE TRUE FALSE FALSE
   const RaceTestOutcome t1 = friedman_conover(y1(), 0.95);
@@ -81,27 +81,27 @@ TEST(Statistics, ConoverPostHocMatchesIrace) {
   EXPECT_EQ(t3.keep, (std::vector<bool>{true, true, false, false, false}));
 }
 
-TEST(Statistics, FriedmanAtHighConfidenceKeepsEveryone) {
+TEST(design_Statistics, FriedmanAtHighConfidenceKeepsEveryone) {
   // p = 0.0186 for y2: not significant at confidence 0.99
   const RaceTestOutcome t = friedman_conover(y2(), 0.99);
   EXPECT_FALSE(t.dropped_any);
   EXPECT_EQ(t.keep, (std::vector<bool>(5, true)));
 }
 
-TEST(Statistics, AllTiedRowsGiveNoTest) {
+TEST(design_Statistics, AllTiedRowsGiveNoTest) {
   const RaceTestOutcome t = friedman_conover(matrix(3, 3, std::vector<double>(9, 1.0)), 0.95);
   EXPECT_FALSE(t.dropped_any);
   EXPECT_EQ(t.keep, (std::vector<bool>(3, true)));
 }
 
-TEST(Statistics, SignedRankDistribution) {
+TEST(design_Statistics, SignedRankDistribution) {
   // R: psignrank(10, 9); psignrank(3, 5); psignrank(40, 12)
   EXPECT_NEAR(psignrank(10, 9), 0.08203125, 1e-15);
   EXPECT_NEAR(psignrank(3, 5), 0.15625, 1e-15);
   EXPECT_NEAR(psignrank(40, 12), 0.54516601562499989, 1e-14);
 }
 
-TEST(Statistics, WilcoxonExact) {
+TEST(design_Statistics, WilcoxonExact) {
   // R: wilcox.test(x, y, paired=TRUE, conf.int=TRUE) -> V 40, p 0.0390625, estimate 0.46000000000000008
   const std::vector<double> x{1.83, 0.50, 1.62, 2.48, 1.68, 1.88, 1.55, 3.06, 1.30};
   const std::vector<double> y{0.878, 0.647, 0.598, 2.05, 1.06, 1.29, 1.06, 3.14, 1.29};
@@ -112,7 +112,7 @@ TEST(Statistics, WilcoxonExact) {
   EXPECT_NEAR(w.estimate, 0.46000000000000008, 1e-12);
 }
 
-TEST(Statistics, WilcoxonNormalApproximationWithTies) {
+TEST(design_Statistics, WilcoxonNormalApproximationWithTies) {
   // R: wilcox.test(x2, y2w, paired=TRUE, conf.int=TRUE) -> V 30, p 0.49459932738312368, estimate -0.49995 (uniroot)
   const std::vector<double> x{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12};
   const std::vector<double> y{2, 1, 3.5, 3, 7, 5, 9, 8.5, 8, 12, 10, 13};
@@ -133,7 +133,7 @@ TEST(Statistics, WilcoxonNormalApproximationWithTies) {
   EXPECT_NEAR(w3.estimate, 0.4, 1e-3);
 }
 
-TEST(Statistics, TwoSurvivorsFollowIrace) {
+TEST(design_Statistics, TwoSurvivorsFollowIrace) {
   // R: irace:::aux_friedman(cbind(x, yy), c(TRUE,TRUE), 1:2, 0.95) -> alive FALSE TRUE, best 2, p 0.0390625
   CostMatrix m(9, 2);
   const std::vector<double> x{1.83, 0.50, 1.62, 2.48, 1.68, 1.88, 1.55, 3.06, 1.30};
