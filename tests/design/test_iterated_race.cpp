@@ -71,6 +71,23 @@ TEST(design_IteratedRace, BudgetFormulasMatchIrace) {
   EXPECT_EQ(minimum_budget(o, 5, 5), 6 * 5 * 10);
 }
 
+TEST(design_IteratedRace, FirstIterationScheduleMatchesIrace) {
+  // irace 3.5 on the same 5-parameter space with maxExperiments = 3000 printed:
+  // nbIterations 4, minNbSurvival 4, "Iteration 1 of 4", currentBudget 750, nbConfigurations 125.
+  const ParameterSpace s = synthetic_space();
+  ThreadedRunner runner(synthetic_cost, 1);
+  IteratedRace design(s, options(3000, 1), runner);
+  design.advance();
+  const DesignState& st = design.state();
+  EXPECT_EQ(st.nb_iterations, 4);
+  EXPECT_EQ(st.min_survival, 4);
+  EXPECT_EQ(st.current_budget, 750);
+  EXPECT_EQ(st.nb_configurations, 125);
+  ASSERT_TRUE(st.race);
+  EXPECT_EQ(st.race->config_ids.size(), 125u);
+  EXPECT_EQ(st.instances.size(), 750u);  // ceil(3000 / minSurvival) positions
+}
+
 TEST(design_IteratedRace, RejectsAnInsufficientBudget) {
   const ParameterSpace s = synthetic_space();
   ThreadedRunner runner(synthetic_cost, 1);

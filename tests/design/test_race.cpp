@@ -45,6 +45,9 @@ TEST(design_Race, KeepsTheBestOfConfigurationsWithKnownMeans) {
   while (!state.finished) {
     race_step(state, settings, env);
     ++steps;
+    if (state.next_task - 1 < 5) {
+      EXPECT_EQ(state.nb_alive(), 10u) << "no test before firstTest instances";
+    }
   }
   const RaceResult r = finish_race(state);
   EXPECT_LE(r.experiments_used, 300);
