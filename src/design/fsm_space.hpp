@@ -1,0 +1,50 @@
+#pragma once
+// The probabilistic-FSM design space (modules-and-grammar.md §8.1 structure, §8.5 naming and
+// two-digit module ids, ARGoS3-AutoMoDe master tokens: ξ in --p<i>x<j>, η in --w<i>x<j>).
+//
+// The module table is plain data so that the project's module catalogue can feed it; a module
+// parameter shared by several modules (same name) becomes one irace parameter whose condition
+// lists every module that has it, as the unified Demiurge grammar does.
+#include <string>
+#include <vector>
+
+#include "design/parameter_space.hpp"
+
+namespace sd::design {
+
+struct ModuleParam {
+  std::string name;   // irace parameter name stem, e.g. "RWM" -> RWM0, "P" -> P0x1
+  std::string token;  // command-line token stem, e.g. "rwm" -> --rwm0, "p" -> --p0x1
+  ParamType type = ParamType::Real;
+  double lower = 0.0, upper = 1.0;  // integer / real
+  std::vector<std::string> values;  // categorical / ordinal
+};
+
+struct Module {
+  int id = 0;  // two-digit id: 10 * flavour + module digit
+  std::vector<ModuleParam> params;
+};
+
+struct FsmModules {
+  std::vector<Module> behaviours;
+  std::vector<Module> conditions;
+};
+
+struct FsmSpaceOptions {
+  int max_states = 4;       // NumStates in 1..max_states (>= 2)
+  int max_transitions = 4;  // NumConnections<i> in 1..max_transitions
+  int digits = 2;           // AutoMoDe scenarios use digits = 2
+  /// Values of the architecture parameter ARCH "--" (first token of every string). With one
+  /// value it is fixed; with several (later: "bt-config"), the FSM part is conditioned on
+  /// ARCH == "fsm-config".
+  std::vector<std::string> architectures = {"fsm-config"};
+};
+
+/// Chocolate modules with two-digit ids: behaviours 10-15, conditions 10-15.
+FsmModules chocolate_fsm_modules();
+
+/// Builds the finalized FSM parameter space. Throws std::invalid_argument on an inconsistent
+/// table (same parameter name with different token/type/domain, no behaviours, ...).
+ParameterSpace build_fsm_space(const FsmModules& modules, const FsmSpaceOptions& options = {});
+
+}  // namespace sd::design

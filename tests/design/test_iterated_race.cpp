@@ -1,0 +1,232 @@
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+
+#include "design/fsm_space.hpp"
+#include "design/iterated_race.hpp"
+
+using namespace sd::design;
+
+namespace {
+
+// Mixed space with a known optimum: C = "c", I = 42, R = 7.5, O = "o4", Q = 0.3 (Q only when C = "c").
+ParameterSpace synthetic_space() {
+  ParameterSpace s(2);
+  s.add({"C", "--c ", ParamType::Categorical, {"a", "b", "c", "d"}, {}, {}, false, {}});
+  s.add({"I", "--i ", ParamType::Integer, {}, Bound::fixed(1), Bound::fixed(100), false, {}});
+  s.add({"R", "--r ", ParamType::Real, {}, Bound::fixed(0), Bound::fixed(10), false, {}});
+  s.add({"O", "--o ", ParamType::Ordinal, {"o1", "o2", "o3", "o4", "o5"}, {}, {}, false, {}});
+  s.add({"Q", "--q ", ParamType::Real, {}, Bound::fixed(0), Bound::fixed(1), false, {{"C", Clause::Op::In, {"c"}, 0}}});
+  s.finalize();
+  return s;
+}
+
+double synthetic_cost(const Experiment& e) {
+  const auto& v = e.configuration->values;
+  const bool good_c = v[0] == 2;
+  double cost = good_c ? 0.0 : 1.0;
+  cost += 4 * std::pow((v[1] - 42) / 99, 2) + 4 * std::pow((v[2] - 7.5) / 10, 2) + std::pow((v[3] - 3) / 4, 2);
+  if (good_c) cost += std::pow(v[4] - 0.3, 2);
+  sd::Rng noise(e.seed);  // instance noise shared by all configurations (common random numbers)
+  sd::Rng own(e.seed ^ (static_cast<std::uint64_t>(e.configuration_id) * 0x9e3779b97f4a7c15ULL));
+  return cost + 0.05 * noise.normal() + 0.02 * own.normal();
+}
+
+IraceOptions options(long long budget, std::uint64_t seed) {
+  IraceOptions o;
+  o.max_experiments = budget;
+  o.seed = seed;
+  return o;
+}
+
+// Counts evaluations, to check that a resumed design never re-evaluates.
+struct CountingRunner final : ExperimentRunner {
+  std::size_t evaluated = 0;
+  ThreadedRunner inner{synthetic_cost, 1};
+  void run(std::span<const Experiment> ex, std::span<double> costs) override {
+    evaluated += ex.size();
+    inner.run(ex, costs);
+  }
+};
+
+}  // namespace
+
+TEST(design_IteratedRace, BudgetFormulasMatchIrace) {
+  EXPECT_EQ(default_nb_iterations(1), 2);
+  EXPECT_EQ(default_nb_iterations(11), 5);
+  EXPECT_EQ(default_nb_iterations(101), 8);
+  EXPECT_EQ(default_nb_iterations(133), 9);
+  // iterated-racing.md §2.6 (ACOTSP, budget 1000): N_1 = floor(200 / 6) = 33;
+  // N_2 = floor((208 + 4 elites x 5 old instances) / max(5 + 2, 5 + 1)) = 32.
+  EXPECT_EQ(nb_configurations_for(200, 1, 5, 1, 0, 0, 0), 33);
+  EXPECT_EQ(nb_configurations_for(208, 2, 5, 1, 4, 5, 1), 32);
+  // The 1024 cap (§2.5: B_1 = 22222 for an AutoMoDe-sized space).
+  EXPECT_EQ(nb_configurations_for(22222, 1, 5, 1, 0, 0, 0), 1024);
+  // Elitist saving when old instances dominate: n_j = round_to_multiple(n_old + T_new).
+  EXPECT_EQ(nb_configurations_for(100, 2, 5, 1, 3, 20, 1), (100 + 60) / 21);
+  IraceOptions o;
+  EXPECT_EQ(minimum_budget(o, 9, 9), 1350);  // §2.5
+  o.elitist = false;
+  EXPECT_EQ(minimum_budget(o, 5, 5), 6 * 5 * 10);
+}
+
+TEST(design_IteratedRace, FirstIterationScheduleMatchesIrace) {
+  // irace 3.5 on the same 5-parameter space with maxExperiments = 3000 printed:
+  // nbIterations 4, minNbSurvival 4, "Iteration 1 of 4", currentBudget 750, nbConfigurations 125.
+  const ParameterSpace s = synthetic_space();
+  ThreadedRunner runner(synthetic_cost, 1);
+  IteratedRace design(s, options(3000, 1), runner);
+  design.advance();
+  const DesignState& st = design.state();
+  EXPECT_EQ(st.nb_iterations, 4);
+  EXPECT_EQ(st.min_survival, 4);
+  EXPECT_EQ(st.current_budget, 750);
+  EXPECT_EQ(st.nb_configurations, 125);
+  ASSERT_TRUE(st.race);
+  EXPECT_EQ(st.race->config_ids.size(), 125u);
+  EXPECT_EQ(st.instances.size(), 750u);  // ceil(3000 / minSurvival) positions
+}
+
+TEST(design_IteratedRace, RejectsAnInsufficientBudget) {
+  const ParameterSpace s = synthetic_space();
+  ThreadedRunner runner(synthetic_cost, 1);
+  IteratedRace design(s, options(100, 1), runner);  // N_iter 4, minSurv 4 -> needs 180
+  EXPECT_THROW(design.run(), std::invalid_argument);
+}
+
+TEST(design_IteratedRace, FindsTheOptimumOfASyntheticObjective) {
+  const ParameterSpace s = synthetic_space();
+  ThreadedRunner runner(synthetic_cost, 2);
+  IteratedRace design(s, options(3000, 1), runner);
+  int last_iteration = 0;
+  long long last_used = 0;
+  design.on_progress([&](const Progress& p) {
+    EXPECT_GE(p.iteration, last_iteration);
+    EXPECT_GE(p.experiments_used, last_used);
+    EXPECT_LE(p.experiments_used, p.budget);
+    EXPECT_GE(p.alive, 1u);
+    last_iteration = p.iteration;
+    last_used = p.experiments_used;
+  });
+  const DesignResult r = design.run();
+  ASSERT_FALSE(r.elites.empty());
+  EXPECT_LE(r.experiments_used, 3000);
+  EXPECT_GT(r.experiments_used, 2500);  // the budget is (nearly) spent
+  EXPECT_GE(r.iterations, 4);
+  const auto& best = r.elites.front().configuration.values;
+  EXPECT_EQ(best[0], 2) << s.render(r.elites.front().configuration);
+  EXPECT_NEAR(best[1], 42, 10);
+  EXPECT_NEAR(best[2], 7.5, 1.2);
+  EXPECT_NEAR(best[3], 3, 1);
+  EXPECT_NEAR(best[4], 0.3, 0.2);
+  EXPECT_LT(r.elites.front().mean_cost, 0.1);
+  // Elites are distinct configurations, best first.
+  for (std::size_t a = 0; a < r.elites.size(); ++a)
+    for (std::size_t b = a + 1; b < r.elites.size(); ++b) EXPECT_FALSE(r.elites[a].configuration == r.elites[b].configuration);
+}
+
+TEST(design_IteratedRace, ResultDoesNotDependOnTheThreadCount) {
+  const ParameterSpace space = build_fsm_space(chocolate_fsm_modules());
+  // A cheap stand-in for a mission: prefer 3 states, attraction in state 0, and p close to 0.7.
+  auto cost = [&](const Experiment& e) {
+    const auto& v = e.configuration->values;
+    double c = std::fabs(v[*space.index_of("NumStates")] - 3);
+    c += space.value_text(*e.configuration, *space.index_of("S0")) == "14" ? 0 : 1;
+    const double p = v[*space.index_of("P0x0")];
+    c += std::isnan(p) ? 0.5 : std::fabs(p - 0.7);
+    sd::Rng noise(e.seed + static_cast<std::uint64_t>(e.configuration_id));
+    return c + 0.3 * noise.normal();
+  };
+  auto run_with = [&](unsigned threads) {
+    ThreadedRunner runner(cost, threads);
+    IteratedRace design(space, options(1500, 42), runner);
+    design.run();
+    return design.state();
+  };
+  const DesignState one = run_with(1);
+  const DesignState two = run_with(2);
+  ASSERT_EQ(one.experiments.size(), two.experiments.size());
+  for (std::size_t i = 0; i < one.experiments.size(); ++i) {
+    ASSERT_EQ(one.experiments[i].configuration_id, two.experiments[i].configuration_id);
+    ASSERT_EQ(one.experiments[i].position, two.experiments[i].position);
+    ASSERT_EQ(one.experiments[i].cost, two.experiments[i].cost);
+  }
+  ASSERT_EQ(one.elites.size(), two.elites.size());
+  for (std::size_t i = 0; i < one.elites.size(); ++i) {
+    EXPECT_EQ(one.elites[i].id, two.elites[i].id);
+    EXPECT_EQ(space.render(one.configurations[one.elites[i].id].config),
+              space.render(two.configurations[two.elites[i].id].config));
+  }
+  EXPECT_EQ(state_to_json(one).dump(), state_to_json(two).dump());
+}
+
+TEST(design_IteratedRace, ResumingFromAnyCheckpointGivesTheSameResult) {
+  const ParameterSpace s = synthetic_space();
+  std::vector<nlohmann::json> checkpoints;
+  std::vector<std::size_t> evaluated_at;
+  CountingRunner full_runner;
+  IteratedRace full(s, options(1200, 9), full_runner);
+  std::size_t configurations_seen = 0, experiments_seen = 0;
+  full.on_checkpoint([&](const Checkpoint& c) {
+    // The new-record indices tile the history without gaps or overlaps.
+    EXPECT_EQ(c.first_new_configuration, configurations_seen);
+    EXPECT_EQ(c.first_new_experiment, experiments_seen);
+    configurations_seen = c.state.configurations.size();
+    experiments_seen = c.state.experiments.size();
+    checkpoints.push_back(state_to_json(c.state, checkpoints.size() % 2 == 0));
+    evaluated_at.push_back(full_runner.evaluated);
+  });
+  const DesignResult expected = full.run();
+  const std::string expected_state = state_to_json(full.state()).dump();
+  ASSERT_GT(checkpoints.size(), 20u);
+  const std::size_t n = checkpoints.size();
+  for (std::size_t k : {std::size_t{0}, std::size_t{1}, std::size_t{2}, std::size_t{7}, n / 3, n / 2 + 1, n - 2}) {
+    // Odd checkpoints were written without history: hand it over separately, as a database
+    // that stores the new records of every checkpoint would.
+    std::optional<History> history;
+    if (k % 2 == 1) {
+      history.emplace();
+      const auto& all = full.state().configurations.all();
+      const auto& log = full.state().experiments;
+      history->configurations.assign(all.begin(), all.begin() + checkpoints[k]["configuration_count"].get<std::ptrdiff_t>());
+      history->experiments.assign(log.begin(), log.begin() + checkpoints[k]["experiment_count"].get<std::ptrdiff_t>());
+    }
+    DesignState restored = state_from_json(nlohmann::json::parse(checkpoints[k].dump()), history);
+    CountingRunner runner;
+    IteratedRace resumed(s, options(1200, 9), runner);
+    resumed.restore(std::move(restored));
+    const DesignResult r = resumed.run();
+    EXPECT_EQ(runner.evaluated + evaluated_at[k], full_runner.evaluated) << "checkpoint " << k;
+    ASSERT_EQ(r.elites.size(), expected.elites.size()) << "checkpoint " << k;
+    for (std::size_t i = 0; i < r.elites.size(); ++i) EXPECT_EQ(r.elites[i].id, expected.elites[i].id);
+    EXPECT_EQ(state_to_json(resumed.state()).dump(), expected_state) << "checkpoint " << k;
+  }
+}
+
+TEST(design_IteratedRace, RefusesAForeignCheckpoint) {
+  const ParameterSpace s = synthetic_space();
+  ThreadedRunner runner(synthetic_cost, 1);
+  IteratedRace a(s, options(600, 1), runner);
+  a.advance();
+  IteratedRace b(s, options(600, 2), runner);  // other seed
+  EXPECT_THROW(b.restore(a.state()), std::runtime_error);
+  nlohmann::json broken = state_to_json(a.state());
+  broken.erase("model");
+  EXPECT_THROW(state_from_json(broken), std::runtime_error);
+  EXPECT_THROW(state_from_json(nlohmann::json{{"hello", 1}}), std::runtime_error);
+  // A history that does not match the state is refused.
+  EXPECT_THROW(state_from_json(state_to_json(a.state(), false), History{}), std::runtime_error);
+}
+
+TEST(design_IteratedRace, InitialConfigurationsAreRacedFirst) {
+  const ParameterSpace s = synthetic_space();
+  ThreadedRunner runner(synthetic_cost, 1);
+  IraceOptions o = options(600, 3);
+  o.initial_configurations = {s.parse("--c c --i 42 --r 7.5 --o o4 --q 0.3")};
+  IteratedRace design(s, o, runner);
+  const DesignResult r = design.run();
+  EXPECT_EQ(design.state().configurations[1].config, o.initial_configurations[0]);
+  EXPECT_EQ(design.state().all_elites.front().front(), 1);  // the optimum wins the first race
+  EXPECT_EQ(r.elites.front().configuration.values[0], 2);
+}
