@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "design/rng_include.hpp"
+#include "core/rng.hpp"
 
 namespace sd::design {
 

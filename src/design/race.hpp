@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "design/rng_include.hpp"
+#include "core/rng.hpp"
 #include "design/experiment_runner.hpp"
 #include "design/instance_list.hpp"
 #include "design/records.hpp"

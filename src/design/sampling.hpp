@@ -4,7 +4,7 @@
 #include <functional>
 #include <vector>
 
-#include "design/rng_include.hpp"
+#include "core/rng.hpp"
 #include "design/model.hpp"
 #include "design/parameter_space.hpp"
 #include "design/records.hpp"

@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "design/rng_include.hpp"
+#include "core/rng.hpp"
 #include "design/instance_list.hpp"
 #include "design/model.hpp"
 #include "design/race.hpp"
