@@ -24,17 +24,20 @@ void ReferenceModel::update(const SwarmState& swarm, int robot) {
   raw_light = swarm.light[r];
   raw_ground = swarm.ground[r];
 
-  // Ground: majority over the last 5 steps x 3 sensors (more than 10 of 15 samples).
-  ground_history[static_cast<std::size_t>(ground_samples % kGroundHistory)] = raw_ground;
+  // Ground: majority over the last 5 steps x 3 sensors (more than 10 of 15 samples). Each
+  // step's black and white counts are kept, so the window sum is updated, not recounted.
+  const auto slot = static_cast<std::size_t>(ground_samples % kGroundHistory);
+  std::uint8_t black = 0, white = 0;
+  for (const double g : raw_ground) {
+    if (g < 0.03) ++black;
+    else if (g > 0.85) ++white;
+  }
+  window_black += black - ground_black[slot];
+  window_white += white - ground_white[slot];
+  ground_black[slot] = black;
+  ground_white[slot] = white;
   ++ground_samples;
-  const int samples = std::min(ground_samples, kGroundHistory);
-  int black = 0, white = 0;
-  for (int s = 0; s < samples; ++s)
-    for (const double g : ground_history[static_cast<std::size_t>(s)]) {
-      if (g < 0.03) ++black;
-      else if (g > 0.85) ++white;
-    }
-  ground = black > 10 ? 0.0 : (white > 10 ? 1.0 : 0.5);
+  ground = window_black > 10 ? 0.0 : (window_white > 10 ? 1.0 : 0.5);
 
   const auto& directions = sensor_directions();
   Vec2 prox, light_sum;

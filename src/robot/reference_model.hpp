@@ -34,7 +34,8 @@ struct ReferenceModel {
   // --- memory ---
   static constexpr int kGroundHistory = 5;
   static constexpr int kRabBufferSteps = 11;  // messages of this step and of the 10 before
-  std::array<std::array<double, 3>, kGroundHistory> ground_history{};
+  std::array<std::uint8_t, kGroundHistory> ground_black{}, ground_white{};  // per step
+  int window_black = 0, window_white = 0;                                   // over the window
   int ground_samples = 0;
   std::array<Vec2, kRabBufferSteps> rab_steps{};
   int rab_step = 0;

@@ -201,7 +201,7 @@ void Physics::solve_contacts(const ArenaModel& arena, SwarmState& swarm, double 
       v += tangent * (accumulated_t - c.tangent_impulse);
       c.tangent_impulse = accumulated_t;
     }
-    if (largest < 1e-9) break;  // converged
+    if (largest < 1e-6) break;  // converged to a micrometre per second
   }
 }
 

@@ -30,7 +30,7 @@ Region Region::polygon(std::vector<Vec2> vertices) {
   return region;
 }
 
-bool Region::contains(Vec2 p) const {
+bool Region::contains_other(Vec2 p) const {
   switch (shape) {
     case Shape::Circle: {
       const double d2 = (p - center).squared_length();

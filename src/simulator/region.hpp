@@ -22,10 +22,19 @@ struct Region {
   static Region rectangle(Vec2 center, Vec2 size, double yaw = 0.0);
   static Region polygon(std::vector<Vec2> vertices);
 
-  bool contains(Vec2 p) const;
+  bool contains(Vec2 p) const {
+    if (shape == Shape::Circle) {  // the common case, inline
+      const double d2 = (p - center).squared_length();
+      return inclusive ? d2 <= radius * radius : d2 < radius * radius;
+    }
+    return contains_other(p);
+  }
   /// Axis-aligned bounds (min, max).
   std::pair<Vec2, Vec2> bounds() const;
   double area() const;
+
+ private:
+  bool contains_other(Vec2 p) const;
 };
 
 }  // namespace sd

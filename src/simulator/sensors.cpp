@@ -60,6 +60,7 @@ void update_pairs(SwarmState& swarm, double neighbour_range) {
   for (RobotPair& pair : swarm.pairs) {
     pair.delta = swarm.position[pair.b] - swarm.position[pair.a];
     pair.distance_sq = pair.delta.squared_length();
+    swarm.distance_sq[pair.a * swarm.size + pair.b] = swarm.distance_sq[pair.b * swarm.size + pair.a] = pair.distance_sq;
     if (pair.distance_sq < range_sq) {
       swarm.neighbours[pair.a * stride + swarm.neighbour_count[pair.a]++] = {pair.b, pair.delta, pair.distance_sq};
       swarm.neighbours[pair.b * stride + swarm.neighbour_count[pair.b]++] = {pair.a, -pair.delta, pair.distance_sq};
@@ -196,9 +197,14 @@ void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, S
     if (!a_receives && !b_receives) continue;
     const Vec2 pa = swarm.position[pair.a], pb = swarm.position[pair.b];
     // The RAB ray runs at 5.2 cm, below every body's top: any robot or wall on it blocks.
+    // A body that touches the segment is closer than |ab| + r to both ends.
     bool visible = arena.line_of_sight_walls(pa, pb);
+    const double reach = std::sqrt(pair.distance_sq) + kRadius;
+    const double reach_sq = reach * reach;
+    const double* from_a = &swarm.distance_sq[pair.a * n];
+    const double* from_b = &swarm.distance_sq[pair.b * n];
     for (int k = 0; k < n && visible; ++k) {
-      if (k == pair.a || k == pair.b) continue;
+      if (from_a[k] >= reach_sq || from_b[k] >= reach_sq || k == pair.a || k == pair.b) continue;
       if (segment_hits_disc(pa, pb, swarm.position[k], kRadius)) visible = false;
     }
     if (!visible) continue;

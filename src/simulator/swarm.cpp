@@ -20,6 +20,7 @@ void SwarmState::resize(int robots) {
   blob_count.assign(n, 0);
   neighbours.assign(n * rab_stride(), {});
   neighbour_count.assign(n, 0);
+  distance_sq.assign(n * n, 0.0);
   pairs.clear();
   pairs.reserve(n * (n - 1) / 2);
   for (std::size_t a = 0; a < n; ++a)
