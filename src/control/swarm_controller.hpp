@@ -14,7 +14,9 @@ namespace sd {
 
 class SwarmController {
  public:
+  /// Keeps a reference to `software`, which must outlive the controller.
   SwarmController(const ControlSoftware& software, int robots);
+  SwarmController(ControlSoftware&&, int) = delete;
 
   /// Start of a run: every robot in state 0, about to enter it.
   void reset();
