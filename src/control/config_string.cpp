@@ -136,6 +136,7 @@ ModuleInstance read_module(Reader& reader, ModuleKind kind, const Entry& id_entr
   instance.id = id;
   for (std::size_t p = 0; p < spec->parameters.size(); ++p) {
     const ParameterSpec& param = spec->parameters[p];
+    if (!spec->parameter_active(p, instance.parameters)) continue;  // e.g. rwm without exp 1
     const Entry& e = reader.require({param.token, state, transition}, spec->name + " needs it");
     if (!param.accepts(e.value))
       throw ConfigError("'" + e.text + "': " + param.token + " of " + spec->name + " must be " + param.domain_text());
@@ -218,7 +219,8 @@ std::string to_config_string(const ControlSoftware& software) {
     const ModuleSpec* spec = find_module(kind, m.id);
     if (!spec) return;
     for (std::size_t p = 0; p < spec->parameters.size(); ++p)
-      out += " --" + spec->parameters[p].token + suffix + " " + format_number(m.parameters[p]);
+      if (spec->parameter_active(p, m.parameters))
+        out += " --" + spec->parameters[p].token + suffix + " " + format_number(m.parameters[p]);
   };
   for (std::size_t i = 0; i < software.fsm.states.size(); ++i) {
     const FsmState& state = software.fsm.states[i];

@@ -20,8 +20,12 @@ std::string describe_module(const ModuleInstance& module, ModuleKind kind) {
   std::string text = spec->name + "[" + std::to_string(module.id) + "]";
   if (!spec->parameters.empty()) {
     text += "(";
-    for (std::size_t p = 0; p < spec->parameters.size(); ++p)
-      text += (p ? ", " : "") + spec->parameters[p].token + "=" + format_number(module.parameters[p]);
+    bool first = true;
+    for (std::size_t p = 0; p < spec->parameters.size(); ++p) {
+      if (!spec->parameter_active(p, module.parameters)) continue;
+      text += (first ? "" : ", ") + spec->parameters[p].token + "=" + format_number(module.parameters[p]);
+      first = false;
+    }
     text += ")";
   }
   return text;

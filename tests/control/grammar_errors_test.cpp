@@ -29,7 +29,7 @@ std::string with_condition(const std::string& condition) { return kTwoStops + " 
 
 TEST(ControlGrammarErrors, UnknownBehaviourId) {
   expect_rejected("--fsm-config --nstates 1 --s0 16", "--s0");
-  expect_rejected("--fsm-config --nstates 1 --s0 20", "--s0");
+  expect_rejected("--fsm-config --nstates 1 --s0 22", "--s0");  // TuttiFrutti has no 22
   expect_rejected("--fsm-config --nstates 1 --s0 6", "--s0");  // legacy 6 -> 16, unknown
   expect_rejected("--fsm-config --nstates 2 --s0 11 --s1 -1", "--s1");
   expect_rejected("--fsm-config --nstates 1 --s0 10.5 --rwm0 5", "--s0");
