@@ -147,9 +147,19 @@ TEST(ControlGrammarErrors, EmptyOrWhitespaceString) {
   EXPECT_THROW(parse_control_software("--fsm-config"), ConfigError);
 }
 
-TEST(ControlGrammarErrors, BehaviourTreesAreNotAvailableYet) {
-  expect_rejected("--bt-config --nroot 3 --nchildroot 1 --n0 0 --nchild0 2 --n00 6 --c00 15 --p00 0.5 --n01 5 --a01 11",
-                  "--bt-config");
+TEST(ControlGrammarErrors, MalformedBehaviourTrees) {
+  const std::string maple = "--bt-config --nroot 3 --nchildroot 1 --n0 0 --nchild0 2 --n00 6 --c00 15 --p00 0.5 ";
+  expect_rejected(maple + "--n01 5 --a01 11 --p01 0 --rwm01 4", "--rwm01");  // Stop has no rwm
+  expect_rejected(maple + "--n01 7 --a01 11", "--n01");                     // no node type 7
+  expect_rejected(maple + "--n01 5", "--a01");                               // action without behaviour
+  expect_rejected(maple + "--n01 5 --a01 11 --p01 1.5", "--p01");            // success probability
+  expect_rejected(maple + "--n01 4 --nchild01 2 --n010 6 --c010 15 --p010 1 --n011 6 --c011 15 --p011 1",
+                  "--nchild01");                                           // a negation has one child
+  expect_rejected("--bt-config --nroot 3 --nchildroot 1 --n0 0 --nchild0 1", "--n00");
+  expect_rejected("--bt-config --nroot 9 --nchildroot 1", "--nroot");
+  expect_rejected("--bt-config --nroot 3 --nchildroot 1 --n0 4 --nchild0 1 --n00 4 --nchild00 1 --n000 4 --nchild000 1 "
+                  "--n0000 4 --nchild0000 1 --n00000 4 --nchild00000 1 --n000000 5 --a000000 11",
+                  "000000");                                               // deeper than 5 levels
 }
 
 TEST(ControlGrammarErrors, UnknownLeadingToken) { expect_rejected("--foo-config --nstates 1 --s0 11", "--foo-config"); }
