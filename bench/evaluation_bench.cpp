@@ -27,11 +27,25 @@ void run_aac(benchmark::State& state, const char* config) {
       benchmark::Counter(robot_ticks * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 
+// The camera's cost: robots show yellow and follow yellow (TuttiFrutti GoToColor), on the
+// same mission, compared with the attraction/stop FSM above.
+const char* kColourFollowing =
+    "--fsm-config --nstates 2 --s0 28 --vel0 1 --cle0 4 --clr0 4 --n0 1 --n0x0 0 --c0x0 10 --p0x0 1.0 "
+    "--s1 21 --cle1 4 --n1 1 --n1x0 0 --c1x0 11 --p1x0 0.1";
+// A Maple behaviour tree with the same modules as the attraction/stop FSM.
+const char* kMapleTree =
+    "--bt-config --nroot 3 --nchildroot 2 --n0 0 --nchild0 2 --n00 6 --c00 40 --p00 1 --n01 5 --a01 44 --att01 5 --p01 0 "
+    "--n1 0 --nchild1 2 --n10 6 --c10 41 --p10 0.1 --n11 5 --a11 41 --p11 0";
+
 void BM_AacAttractionStop(benchmark::State& state) { run_aac(state, kAttractStop); }
+void BM_AacColourFollowingCamera(benchmark::State& state) { run_aac(state, kColourFollowing); }
+void BM_AacMapleTree(benchmark::State& state) { run_aac(state, kMapleTree); }
 void BM_AacExplorationPhototaxis(benchmark::State& state) { run_aac(state, kExplorePhototaxis); }
 
 BENCHMARK(BM_AacAttractionStop)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_AacExplorationPhototaxis)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_AacColourFollowingCamera)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_AacMapleTree)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
 }  // namespace
 
