@@ -44,7 +44,7 @@ void Physics::step(const ArenaModel& arena, SwarmState& swarm) {
     const double left = swarm.wheel_left[i], right = swarm.wheel_right[i];
     const double v = 0.5 * (left + right);
     target_velocity_[i] = swarm.heading[i] * v;
-    target_angular_[i] = (right - left) / epuck::kInterwheelDistance;
+    target_angular_[i] = (right - left) / epuck::kInterwheelDistance;  // both 0: the drive stops
     max_speed = std::max({max_speed, std::abs(v), swarm.velocity[i].length()});
   }
 
@@ -91,16 +91,23 @@ void Physics::step(const ArenaModel& arena, SwarmState& swarm) {
   std::erase_if(pair_candidates_, [&](const Candidate& c) { return !moving_[find_island(c.a)]; });
   std::erase_if(wall_candidates_, [&](const Candidate& c) { return !moving_[find_island(c.a)]; });
 
+  // Chipmunk's order within a sub-step: move with the velocity of the previous sub-step,
+  // then let the drive and the contacts set the next one. So the first sub-step of a tick
+  // still moves with the last tick's velocity (a turn starting from straight motion covers
+  // 9/10 of omega dt, as in the ARGoS traces). Contacts are solved before each move, on the
+  // positions the move starts from, so the move can never create an overlap.
   if (!contact_robots_.empty()) {
     for (int sub = 0; sub < epuck::kPhysicsSubsteps; ++sub) {
-      for (const std::uint16_t i : contact_robots_) accelerate(swarm.velocity[i], target_velocity_[i]);
       solve_contacts(arena, swarm, max_speed);
       for (const std::uint16_t i : contact_robots_) swarm.position[i] += swarm.velocity[i] * kDt;
       separate_overlaps(arena, swarm);
+      for (const std::uint16_t i : contact_robots_) accelerate(swarm.velocity[i], target_velocity_[i]);
     }
   }
   for (int i = 0; i < n; ++i) {
-    swarm.yaw[i] = wrap_signed(swarm.yaw[i] + target_angular_[i] * epuck::kTickSeconds);
+    const double turn = (swarm.angular_velocity[i] + target_angular_[i] * (epuck::kPhysicsSubsteps - 1)) * kDt;
+    swarm.angular_velocity[i] = target_angular_[i];  // the angular joint is stiff: one sub-step
+    swarm.yaw[i] = wrap_signed(swarm.yaw[i] + turn);
     swarm.heading[i] = {std::cos(swarm.yaw[i]), std::sin(swarm.yaw[i])};
   }
 }
@@ -130,8 +137,8 @@ void Physics::move_freely(SwarmState& swarm, int i) {
       p += v * (kDt * (epuck::kPhysicsSubsteps - sub));
       return;
     }
-    accelerate(v, target);
     p += v * kDt;
+    accelerate(v, target);
   }
 }
 

@@ -4,8 +4,9 @@
 //
 // What we keep from ARGoS/dynamics2d: the drive sets, once per tick, a target velocity along
 // the heading at the START of the tick (so motion within a tick is a chord, not an arc) and
-// a target angular velocity; 10 sub-steps of 0.01 s; the drive joint's 1.5 N force limit on
-// a 0.4 kg body (so a robot needs ~3 sub-steps to reach 12 cm/s and slides a little when it
+// a target angular velocity; 10 sub-steps of 0.01 s in Chipmunk's order (move with the
+// previous sub-step's velocity, then update it); the drive joint's 1.5 N force limit on a
+// 0.4 kg body (so a robot needs ~3 sub-steps to reach 12 cm/s and slides a little when it
 // turns); inelastic contacts with Coulomb friction 0.49 robot-robot and 0.07 robot-wall.
 //
 // What we simplify, and why: contacts are solved as speculative velocity constraints

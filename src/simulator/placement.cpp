@@ -59,6 +59,7 @@ void place_robots(const ArenaModel& arena, const Region& start, SwarmState& swar
   }
   for (int i = 0; i < swarm.size; ++i) {
     swarm.velocity[i] = {};
+    swarm.angular_velocity[i] = 0.0;
     swarm.wheel_left[i] = swarm.wheel_right[i] = 0.0;
     swarm.led[i] = 0;
   }

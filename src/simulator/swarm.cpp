@@ -9,6 +9,7 @@ void SwarmState::resize(int robots, int arena_leds) {
   yaw.assign(n, 0.0);
   heading.assign(n, {1.0, 0.0});
   velocity.assign(n, {});
+  angular_velocity.assign(n, 0.0);
   wheel_left.assign(n, 0.0);
   wheel_right.assign(n, 0.0);
   led.assign(n, 0);

@@ -42,6 +42,7 @@ struct SwarmState {
   std::vector<double> yaw;
   std::vector<Vec2> heading;                   // (cos yaw, sin yaw), refreshed after physics
   std::vector<Vec2> velocity;                  // body velocity, world frame
+  std::vector<double> angular_velocity;        // body angular velocity (rad/s)
   std::vector<double> wheel_left, wheel_right; // m/s, applied during the next physics step
   std::vector<std::uint32_t> led;              // RGB LEDs colour, 0 = off
   std::vector<std::uint32_t> arena_led_color;  // per ArenaModel::leds, 0 = off
