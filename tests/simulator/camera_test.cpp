@@ -5,23 +5,12 @@
 
 #include "simulator/epuck.hpp"
 #include "simulator/sensors.hpp"
+#include "swarm_builder.hpp"
 
 namespace sd {
 namespace {
 
-SwarmState robots(std::initializer_list<std::pair<Vec2, double>> poses, int arena_leds = 0) {
-  SwarmState s;
-  s.resize(static_cast<int>(poses.size()), arena_leds);
-  std::size_t i = 0;
-  for (const auto& [p, yaw] : poses) {
-    s.position[i] = p;
-    s.yaw[i] = yaw;
-    s.heading[i] = Vec2::polar(1.0, yaw);
-    ++i;
-  }
-  update_pairs(s, 1.0);
-  return s;
-}
+using test::robots;
 
 TEST(Camera, SeesTheLitRearLedOfAnotherRobot) {
   ArenaModel arena;

@@ -6,6 +6,7 @@
 #include "core/rng.hpp"
 #include "simulator/epuck.hpp"
 #include "simulator/sensors.hpp"
+#include "swarm_builder.hpp"
 
 namespace sd {
 namespace {
@@ -29,19 +30,7 @@ Wall vertical_wall(double x, double height = 0.08) {
   return w;
 }
 
-SwarmState robots(std::initializer_list<std::pair<Vec2, double>> poses) {
-  SwarmState s;
-  s.resize(static_cast<int>(poses.size()));
-  std::size_t i = 0;
-  for (const auto& [p, yaw] : poses) {
-    s.position[i] = p;
-    s.yaw[i] = yaw;
-    s.heading[i] = Vec2::polar(1.0, yaw);
-    ++i;
-  }
-  update_pairs(s, 1.0);
-  return s;
-}
+using test::robots;
 
 double quadratic_reading(double d) {
   return d > 0.05 ? 0.0 : std::clamp(298.701 * d * d - 36.8961 * d + 1.08212, 0.0, 1.0);

@@ -1,0 +1,25 @@
+#pragma once
+// Builds a SwarmState with robots at given poses, pairs and neighbour lists refreshed, for
+// the sensor tests.
+#include <initializer_list>
+#include <utility>
+
+#include "simulator/sensors.hpp"
+
+namespace sd::test {
+
+inline SwarmState robots(std::initializer_list<std::pair<Vec2, double>> poses, int arena_leds = 0) {
+  SwarmState s;
+  s.resize(static_cast<int>(poses.size()), arena_leds);
+  std::size_t i = 0;
+  for (const auto& [p, yaw] : poses) {
+    s.position[i] = p;
+    s.yaw[i] = yaw;
+    s.heading[i] = Vec2::polar(1.0, yaw);
+    ++i;
+  }
+  update_pairs(s, 1.0);
+  return s;
+}
+
+}  // namespace sd::test
