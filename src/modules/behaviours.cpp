@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "modules/arlequin.hpp"
 #include "simulator/epuck.hpp"
 
 namespace sd {
@@ -168,6 +169,14 @@ Actuation run_behaviour(const ModuleInstance& b, BehaviourMemory& memory, const 
       const double alpha = std::trunc(prm[0]);
       return coconut(rm.attraction(alpha) * -alpha, 5.0, b, 1, memory, rm, rng);
     }
+    // Arlequin: the shipped network of the module (arlequin.hpp); no memory, no parameters.
+    case 50:
+    case 51:
+    case 52:
+    case 53:
+    case 54:
+    case 55:
+      return arlequin::drive(arlequin::shipped_weights(b.id), rm);
     default:
       return {0.0, 0.0};
   }

@@ -68,6 +68,10 @@ std::vector<ModuleSpec> build_behaviours() {
   b.push_back({33, ModuleKind::Behaviour, "Anti-phototaxis", exploration_scheme(), kLight | kProx});
   b.push_back({34, ModuleKind::Behaviour, "Attraction", plus({att()}, exploration_scheme()), kRab | kProx});
   b.push_back({35, ModuleKind::Behaviour, "Repulsion", plus({rep()}, exploration_scheme()), kRab | kProx});
+  // Arlequin: neural networks without parameters; every one reads the 25 inputs of §4.4.
+  constexpr std::uint8_t kNetwork = kProx | kLight | kGroundInput | kRab;
+  const char* arlequin[] = {"Exploration", "Stop", "Phototaxis", "Anti-phototaxis", "Attraction", "Repulsion"};
+  for (int d = 0; d < 6; ++d) b.push_back({50 + d, ModuleKind::Behaviour, arlequin[d], {}, kNetwork});
   std::sort(b.begin(), b.end(), [](const ModuleSpec& x, const ModuleSpec& y) { return x.id < y.id; });
   return b;
 }
@@ -78,7 +82,7 @@ std::vector<ModuleSpec> build_conditions() {
   const auto xi = [] { return integer("p", 1, 10, "neighbour threshold xi (ARGoS3-AutoMoDe master encoding)"); };
   const auto eta = [] { return real("w", 0, 20, "steepness eta"); };
   // The six Chocolate conditions exist in every flavour that uses them.
-  for (const int base : {10, 20, 30, 40}) {
+  for (const int base : {10, 20, 30, 40, 50}) {
     c.push_back({base + 0, ModuleKind::Condition, "BlackFloor", {probability()}, kGroundInput});
     c.push_back({base + 1, ModuleKind::Condition, "GrayFloor", {probability()}, kGroundInput});
     c.push_back({base + 2, ModuleKind::Condition, "WhiteFloor", {probability()}, kGroundInput});

@@ -57,12 +57,24 @@ void ReferenceModel::update(const SwarmState& swarm, int robot) {
   const std::size_t stride = swarm.rab_stride();
   packets = std::span<const RabPacket>(swarm.rab.data() + r * stride, swarm.rab_count[r]);
   neighbours = static_cast<int>(packets.size());
-  Vec2 step_sum;
-  for (const RabPacket& p : packets) step_sum += p.direction * (1.0 / (1.0 + p.range_cm));
-  rab_steps[static_cast<std::size_t>(rab_step % kRabBufferSteps)] = step_sum;
+  Vec2 step_sum, step_positions;
+  for (const RabPacket& p : packets) {
+    step_sum += p.direction * (1.0 / (1.0 + p.range_cm));
+    step_positions += p.direction * p.range_cm;
+  }
+  const auto rab_slot = static_cast<std::size_t>(rab_step % kRabBufferSteps);
+  rab_steps[rab_slot] = step_sum;
+  rab_position_steps[rab_slot] = step_positions;
+  rab_message_steps[rab_slot] = neighbours;
   ++rab_step;
   attraction_sum = {};
-  for (const Vec2 v : rab_steps) attraction_sum += v;
+  neighbour_position_sum = {};
+  buffered_messages = 0;
+  for (std::size_t k = 0; k < kRabBufferSteps; ++k) {
+    attraction_sum += rab_steps[k];
+    neighbour_position_sum += rab_position_steps[k];
+    buffered_messages += rab_message_steps[k];
+  }
 
   if (swarm.blobs_per_robot > 0)
     blobs = std::span<const CameraBlob>(swarm.blobs.data() + r * static_cast<std::size_t>(swarm.blobs_per_robot),

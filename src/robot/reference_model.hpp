@@ -19,6 +19,10 @@ struct ReferenceModel {
   Vec2 light;                   // unit vector to the light if any sensor reads > 0.2, else 0
   int neighbours = 0;           // senders heard this step
   Vec2 attraction_sum;          // sum over the buffer of (1 / (1 + range_cm)) at the bearing
+  // RM1.1 GetNeighborsCenterOfMass (Arlequin inputs 20-23): sum over the same buffer of
+  // range_cm at the bearing, and how many messages the buffer holds.
+  Vec2 neighbour_position_sum;
+  int buffered_messages = 0;
   std::span<const RabPacket> packets;    // this step's packets
   std::span<const CameraBlob> blobs;     // this step's camera blobs (RM3.0)
   std::array<double, 8> raw_proximity{}; // raw readings (Arlequin inputs)
@@ -38,6 +42,8 @@ struct ReferenceModel {
   int window_black = 0, window_white = 0;                                   // over the window
   int ground_samples = 0;
   std::array<Vec2, kRabBufferSteps> rab_steps{};
+  std::array<Vec2, kRabBufferSteps> rab_position_steps{};
+  std::array<int, kRabBufferSteps> rab_message_steps{};
   int rab_step = 0;
 
   void reset();
