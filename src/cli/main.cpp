@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> args;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if (arg == "--fsm-config" || arg == "--bt-config") {
+    if (arg == "--fsm-config" || arg == "--bt-config" || arg == "--nn-config") {
       context.control_software.assign(argv + i, argv + argc);
       break;
     }

@@ -107,9 +107,11 @@ ControlSoftware parse_control_software(std::span<const std::string> tokens, Pars
   const std::string& first = tokens.front();
   if (first == "--fsm-config") return parse_fsm(tokens.subspan(1), options);
   if (first == "--bt-config") return parse_behaviour_tree(tokens.subspan(1), options);
+  if (first == "--nn-config") return parse_neural_network(tokens.subspan(1));
   if (first == "--nstates") return parse_fsm(tokens, options);
   if (first == "--nroot" || first == "--rootnode") return parse_behaviour_tree(tokens, options);
-  throw ConfigError("unexpected token '" + first + "': control software starts with --fsm-config or --bt-config");
+  throw ConfigError("unexpected token '" + first +
+                    "': control software starts with --fsm-config, --bt-config or --nn-config");
 }
 
 ControlSoftware parse_control_software(const std::string& text, ParseOptions options) {
@@ -124,7 +126,12 @@ std::string format_number(double value) {
 }
 
 std::string to_config_string(const ControlSoftware& software) {
-  return software.architecture == Architecture::Fsm ? fsm_to_string(software.fsm) : behaviour_tree_to_string(software.bt);
+  switch (software.architecture) {
+    case Architecture::Fsm: return fsm_to_string(software.fsm);
+    case Architecture::BehaviourTree: return behaviour_tree_to_string(software.bt);
+    case Architecture::NeuralNetwork: return neural_network_to_string(software.network);
+  }
+  return {};
 }
 
 }  // namespace sd

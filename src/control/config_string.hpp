@@ -26,13 +26,18 @@ ControlSoftware parse_control_software(std::span<const std::string> tokens, Pars
 ControlSoftware parse_control_software(const std::string& text, ParseOptions options = {});
 
 /// Canonical configuration string with two-digit ids, starting with --fsm-config, or with
-/// --bt-config for behaviour trees (format B).
+/// --bt-config for behaviour trees (format B), or --nn-config for EvoStick networks.
 std::string to_config_string(const ControlSoftware& software);
 
 /// Behaviour trees: format B (`--nroot 3 --nchildroot K --n0 0 ...`) or Maple's original
 /// format A (`--rootnode 0 --nchildsroot K --n0 0 --nc0 1 ...`), without the --bt-config.
 ControlSoftware parse_behaviour_tree(std::span<const std::string> tokens, ParseOptions options = {});
 std::string behaviour_tree_to_string(const BehaviourTree& tree);
+
+/// EvoStick networks: `--w<o>x<i> <weight>` for output o (0 left, 1 right wheel) and input
+/// i (0-24, 24 the bias), all 50 of them, without the --nn-config.
+ControlSoftware parse_neural_network(std::span<const std::string> tokens);
+std::string neural_network_to_string(const NeuralNetwork& network);
 
 /// Shortest text that reads back as exactly the same double.
 std::string format_number(double value);

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "modules/arlequin.hpp"
 #include "modules/catalogue.hpp"
 
 namespace sd {
@@ -56,12 +57,19 @@ struct BehaviourTree {
   bool operator==(const BehaviourTree&) const = default;
 };
 
-enum class Architecture { Fsm, BehaviourTree };
+/// EvoStick's control software: one Arlequin perceptron drives every robot (arlequin.hpp).
+struct NeuralNetwork {
+  arlequin::Weights weights{};
+  bool operator==(const NeuralNetwork&) const = default;
+};
+
+enum class Architecture { Fsm, BehaviourTree, NeuralNetwork };
 
 struct ControlSoftware {
   Architecture architecture = Architecture::Fsm;
   Fsm fsm;
   BehaviourTree bt;
+  NeuralNetwork network;
   bool operator==(const ControlSoftware&) const = default;
 
   /// Union of the Input bits of every module it uses.

@@ -5,6 +5,7 @@
 namespace sd {
 
 std::uint8_t ControlSoftware::inputs() const {
+  if (architecture == Architecture::NeuralNetwork) return kProximityInput | kLightInput | kGroundInput | kRangeAndBearingInput;
   std::uint8_t bits = 0;
   if (architecture == Architecture::BehaviourTree) {
     for (const BtNode& node : bt.nodes) {
@@ -65,6 +66,22 @@ std::string node_label(const BtNode& node) {
   return node_name(node.type);
 }
 
+std::string describe_network(const NeuralNetwork& network) {
+  std::string out = "Neural network (EvoStick perceptron): 25 inputs -> 2 sigmoid outputs driving the wheels\n";
+  const char* rows[] = {"left ", "right"};
+  for (std::size_t o = 0; o < 2; ++o) {
+    out += "  ";
+    out += rows[o];
+    out += " wheel weights:";
+    for (std::size_t i = 0; i < static_cast<std::size_t>(arlequin::kInputs); ++i) {
+      out += ' ';
+      out += format_number(network.weights[o * static_cast<std::size_t>(arlequin::kInputs) + i]);
+    }
+    out += '\n';
+  }
+  return out;
+}
+
 void describe_node(const BehaviourTree& tree, int index, int depth, std::string& out) {
   const BtNode& node = tree.nodes[static_cast<std::size_t>(index)];
   out += std::string(static_cast<std::size_t>(2 + 2 * depth), ' ') + node_label(node) + "\n";
@@ -74,6 +91,7 @@ void describe_node(const BehaviourTree& tree, int index, int depth, std::string&
 }  // namespace
 
 std::string describe(const ControlSoftware& software) {
+  if (software.architecture == Architecture::NeuralNetwork) return describe_network(software.network);
   if (software.architecture == Architecture::BehaviourTree) {
     std::string out = "Behaviour tree, " + std::to_string(software.bt.nodes.size()) + " node(s)\n";
     describe_node(software.bt, 0, 0, out);
@@ -90,6 +108,11 @@ std::string describe(const ControlSoftware& software) {
 }
 
 std::string to_dot(const ControlSoftware& software) {
+  if (software.architecture == Architecture::NeuralNetwork)
+    return "digraph nn {\n  rankdir=LR;\n  node [shape=box, style=rounded];\n"
+           "  inputs [label=\"25 inputs\\n(proximity, light, ground, neighbours, bias)\"];\n"
+           "  left [label=\"left wheel\"];\n  right [label=\"right wheel\"];\n"
+           "  inputs -> left;\n  inputs -> right;\n}\n";
   if (software.architecture == Architecture::BehaviourTree) {
     std::string out = "digraph bt {\n  node [shape=box, style=rounded];\n";
     for (std::size_t i = 0; i < software.bt.nodes.size(); ++i) {

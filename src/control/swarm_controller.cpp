@@ -8,8 +8,9 @@ namespace sd {
 
 SwarmController::SwarmController(const ControlSoftware& software, int robots)
     : software_(&software),
-      slots_(static_cast<int>(software.architecture == Architecture::Fsm ? software.fsm.states.size()
-                                                                          : software.bt.nodes.size())) {
+      slots_(static_cast<int>(software.architecture == Architecture::Fsm             ? software.fsm.states.size()
+                              : software.architecture == Architecture::BehaviourTree ? software.bt.nodes.size()
+                                                                                     : 0)) {
   const auto n = static_cast<std::size_t>(robots);
   current_.resize(n);
   entering_.resize(n);
@@ -27,7 +28,12 @@ void SwarmController::reset() {
 }
 
 Actuation SwarmController::step(int robot, const ReferenceModel& rm, Rng& rng) {
-  return software_->architecture == Architecture::Fsm ? step_fsm(robot, rm, rng) : step_tree(robot, rm, rng);
+  switch (software_->architecture) {
+    case Architecture::Fsm: return step_fsm(robot, rm, rng);
+    case Architecture::BehaviourTree: return step_tree(robot, rm, rng);
+    case Architecture::NeuralNetwork: return arlequin::drive(software_->network.weights, rm);
+  }
+  return {0.0, 0.0};
 }
 
 Actuation SwarmController::step_fsm(int robot, const ReferenceModel& rm, Rng& rng) {
