@@ -58,15 +58,13 @@ long long minimum_design_budget(const design::ParameterSpace& space) {
   return design::minimum_budget(engine_options(1, 0), n, n);
 }
 
-PreparedDesign prepare_new_design(const NewDesignSettings& settings, const std::filesystem::path& folder) {
+PreparedDesign check_new_design(const NewDesignSettings& settings) {
   PreparedDesign d;
   try {
     d.mission = load_mission(settings.mission);
   } catch (const MissionError& e) {
     throw UsageError(e.what());
   }
-  d.folder = std::filesystem::absolute(folder.empty() ? default_design_folder(d.mission.name, settings.seed) : folder)
-                 .lexically_normal();
   d.mission_reference = mission_reference(settings.mission);
   try {
     d.choice = design::resolve_design_space(settings.space);
@@ -78,9 +76,16 @@ PreparedDesign prepare_new_design(const NewDesignSettings& settings, const std::
   if (settings.budget < minimum)
     throw UsageError("a budget of " + std::to_string(settings.budget) + " simulation runs is below the minimum of " +
                      std::to_string(minimum) + " that Iterated F-Race needs for this design space");
+  d.options = engine_options(settings.budget, settings.seed);
+  return d;
+}
+
+PreparedDesign prepare_new_design(const NewDesignSettings& settings, const std::filesystem::path& folder) {
+  PreparedDesign d = check_new_design(settings);
+  d.folder = std::filesystem::absolute(folder.empty() ? default_design_folder(d.mission.name, settings.seed) : folder)
+                 .lexically_normal();
   if (std::filesystem::exists(storage::DesignStore::file_in(d.folder)))
     throw DesignFolderError(d.folder.string() + " already holds a design; continue it with --resume " + d.folder.string());
-  d.options = engine_options(settings.budget, settings.seed);
   return d;
 }
 

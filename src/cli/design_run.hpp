@@ -41,8 +41,10 @@ struct PreparedDesign {
   bool resuming = false;
 };
 
-/// Throws UsageError for bad settings (unknown mission, unavailable flavour, budget below the
-/// engine's minimum) and storage::DesignFolderError when the folder already holds a design.
+/// Checks the settings of a new design (no folder yet): UsageError for an unknown mission, an
+/// unavailable flavour or a budget below the engine's minimum.
+PreparedDesign check_new_design(const NewDesignSettings& settings);
+/// check_new_design in a folder; storage::DesignFolderError when it already holds a design.
 /// An empty folder means ./design-<mission>-seed<S> (with -2, -3 ... when taken).
 PreparedDesign prepare_new_design(const NewDesignSettings& settings, const std::filesystem::path& folder);
 /// Throws storage::DesignFolderError for a folder that is not a design, of another format or
