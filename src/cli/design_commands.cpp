@@ -97,8 +97,7 @@ void run_irace_export(const ExportOptions& o) {
   scenario.nb_iterations = o.iterations;
   design::TargetRunnerSpec runner;
   runner.executable = std::filesystem::read_symlink("/proc/self/exe").string();
-  const bool is_path = o.mission.find('/') != std::string::npos || o.mission.ends_with(".json");
-  runner.mission = is_path ? std::filesystem::absolute(o.mission).lexically_normal().string() : o.mission;
+  runner.mission = mission_reference(o.mission);
   runner.maximise = mission.objective.direction == Direction::Maximize;
   design::write_irace_files(o.out, space, scenario, {mission.name}, runner);
   std::cout << "Wrote parameters.txt, scenario.txt, instances.txt and target-runner to " << o.out << ".\n"

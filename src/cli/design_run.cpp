@@ -37,12 +37,6 @@ std::string fingerprint(const design::ParameterSpace& space, const design::Irace
   return design::IteratedRace(space, options, none).fingerprint();
 }
 
-/// Missions given as files are stored by absolute path, so a design resumes from anywhere.
-std::string mission_reference(const std::string& mission) {
-  const bool is_path = mission.find('/') != std::string::npos || mission.ends_with(".json");
-  return is_path ? std::filesystem::absolute(mission).lexically_normal().string() : mission;
-}
-
 /// design-<mission>-seed<S>, or with -2, -3 ... when taken: a design never lands in an old one.
 std::filesystem::path default_design_folder(const std::string& mission_name, std::uint64_t seed) {
   const std::string base = "design-" + mission_name + "-seed" + std::to_string(seed);
@@ -52,6 +46,11 @@ std::filesystem::path default_design_folder(const std::string& mission_name, std
 }
 
 }  // namespace
+
+std::string mission_reference(const std::string& mission) {
+  const bool is_path = mission.find('/') != std::string::npos || mission.ends_with(".json");
+  return is_path ? std::filesystem::absolute(mission).lexically_normal().string() : mission;
+}
 
 long long minimum_design_budget(const design::ParameterSpace& space) {
   const int n = design::default_nb_iterations(space.nb_variable());

@@ -83,6 +83,10 @@ struct DesignReport {
 
 DesignReport run_prepared_design(PreparedDesign& design, const RunOptions& options);
 
+/// A mission as a design stores it: a catalogue name as given, a mission file by absolute path
+/// (so that the design resumes, and target-runner runs, from any directory).
+std::string mission_reference(const std::string& mission);
+
 /// The smallest budget the engine accepts for this space (irace's minimum).
 long long minimum_design_budget(const design::ParameterSpace& space);
 

@@ -5,6 +5,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
@@ -156,12 +157,15 @@ void test_design(const TestDesignOptions& o, const Context& context) {
     if (context.has_control_software() || !o.software.config_file.empty()) {
       software = read_control_software(context, o.software);
     } else {
-      const auto latest = storage::Designs(workspace, project).latest();
-      if (!latest || !latest->best_config)
+      const auto designs = storage::Designs(workspace, project).list();
+      const auto finished = std::find_if(designs.rbegin(), designs.rend(), [](const auto& d) { return d.best_config; });
+      if (finished == designs.rend())
         throw UsageError("project " + project.name +
                          " has no finished design yet: give the control software (--fsm-config ...) to test");
-      if (!o.json) std::cout << "Testing the best control software of design " << latest->id << ":\n  " << *latest->best_config << "\n";
-      software = parse_control_software(*latest->best_config);
+      if (!o.json)
+        std::cout << "Testing the best control software of design " << finished->id << ":\n  " << *finished->best_config
+                  << "\n";
+      software = parse_control_software(*finished->best_config);
     }
   } catch (const ConfigError& e) {
     throw UsageError(e.what());
