@@ -119,6 +119,8 @@ PreparedDesign prepare_resume(const std::filesystem::path& folder, bool allow_fi
 
 DesignReport run_prepared_design(PreparedDesign& d, const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
+  std::filesystem::create_directories(d.folder);
+  const storage::DesignRunLock lock(d.folder);
   storage::DesignStore store = [&] {
     if (d.resuming) return storage::DesignStore::open(d.folder);
     storage::DesignMeta meta{d.mission_reference, std::string(direction_name(d.mission.objective.direction)),

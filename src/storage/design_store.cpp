@@ -1,5 +1,9 @@
 #include "storage/design_store.hpp"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <cmath>
 #include <ctime>
 
@@ -101,9 +105,17 @@ void rollback(Database& db) {
 
 }  // namespace
 
-std::vector<double> record_values(const std::string& record_json) {
-  return design::config_record_from_json(json::array({0, 0, json::parse(record_json)})).config.values;
+DesignRunLock::DesignRunLock(const std::filesystem::path& folder) {
+  const auto path = folder / "design.lock";
+  fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0600);
+  if (fd_ < 0) throw DesignFolderError("cannot create " + path.string());
+  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    ::close(fd_);
+    throw DesignFolderError("the design in " + where(folder) + " is being run by another process");
+  }
 }
+
+DesignRunLock::~DesignRunLock() { ::close(fd_); }
 
 DesignStore::DesignStore(std::filesystem::path folder, std::unique_ptr<Database> db)
     : folder_(std::move(folder)), db_(std::move(db)) {}

@@ -82,7 +82,18 @@ class DesignStore {
   int race_logged_ = 0;               // last iteration with a `races` row
 };
 
-/// Renders a stored configuration record back to the engine's values (for readers).
-std::vector<double> record_values(const std::string& record_json);
+/// Held by the one process that runs a design: a second process (say `design --resume` on a
+/// folder that run-design is running) is refused instead of writing the same results twice.
+/// An flock on DIR/design.lock, so the kernel releases it when the holder dies, even by kill -9.
+class DesignRunLock {
+ public:
+  explicit DesignRunLock(const std::filesystem::path& folder);  // DesignFolderError when held
+  ~DesignRunLock();
+  DesignRunLock(const DesignRunLock&) = delete;
+  DesignRunLock& operator=(const DesignRunLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
 
 }  // namespace sd::storage

@@ -104,8 +104,11 @@ TEST_F(run_design, StatusReadsADetachedDesignWhileItRuns) {
     EXPECT_GT(s["progress"]["race_budget"].get<int>(), 0);
   }
   EXPECT_GT(reads_while_running, 3);
-  if (status()["design"]["state"] == "running")
+  if (status()["design"]["state"] == "running") {
     expect_error(run({"run-design"}), 1, "is still running");
+    // Nor can the account-free command write into the running design's folder.
+    expect_error(run({"design", "--resume", design_folder(1).string()}), 1, "being run by another process");
+  }
   EXPECT_EQ(query("SELECT count(*) FROM designs"), "1");
 
   ASSERT_TRUE(wait_until([&] { return status()["design"]["state"] != "running"; }, 120s));
