@@ -110,10 +110,17 @@ void status(const StatusOptions& o) {
     return;
   }
   const storage::Design& d = *latest;
-  const bool has_db = std::filesystem::exists(storage::DesignStore::file_in(d.folder));
-  const storage::DesignProgress progress = has_db ? storage::read_design_progress(d.folder) : storage::DesignProgress{};
+  storage::DesignProgress progress;
   std::vector<storage::RaceRecord> log;
-  if (o.complete && has_db) log = storage::read_race_log(d.folder);
+  try {
+    if (std::filesystem::exists(storage::DesignStore::file_in(d.folder))) {
+      progress = storage::read_design_progress(d.folder);
+      if (o.complete) log = storage::read_race_log(d.folder);
+    }
+  } catch (const storage::DesignFolderError&) {
+    // A design that has just started may not have committed its tables yet.
+    if (d.state != storage::DesignState::running) throw;
+  }
 
   if (o.json) {
     json out{{"project", project.name},
