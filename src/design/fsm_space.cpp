@@ -1,17 +1,57 @@
 #include "design/fsm_space.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <stdexcept>
 
 namespace sd::design {
 
 namespace {
 
-ModuleParam real(std::string name, std::string token, double lo, double hi) {
-  return {std::move(name), std::move(token), ParamType::Real, lo, hi, {}};
+std::string number_text(double v) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
+  return std::string(buffer, result.ptr);
 }
-ModuleParam integer(std::string name, std::string token, double lo, double hi) {
-  return {std::move(name), std::move(token), ParamType::Integer, lo, hi, {}};
+
+// irace parameter names follow the AutoMoDe grammars: the upper-cased token, except where one
+// token carries two meanings. Chocolate's neighbour-count conditions send their integer
+// threshold ξ in --p<i>x<j>, which the probability of the floor conditions also uses; the
+// grammars call ξ "B".
+std::string irace_name(const ParameterSpec& spec) {
+  if (spec.token == "p" && spec.type == ParameterType::Integer) return "B";
+  std::string name = spec.token;
+  for (char& ch : name) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+  return name;
+}
+
+ModuleParam from_catalogue(const ParameterSpec& spec) {
+  ModuleParam mp;
+  mp.name = irace_name(spec);
+  mp.token = spec.token;
+  mp.lower = spec.min;
+  mp.upper = spec.max;
+  switch (spec.type) {
+    case ParameterType::Integer: mp.type = ParamType::Integer; break;
+    case ParameterType::Real: mp.type = ParamType::Real; break;
+    case ParameterType::Categorical:
+      mp.type = ParamType::Categorical;
+      for (double v : spec.values) mp.values.push_back(number_text(v));
+      break;
+  }
+  return mp;
+}
+
+std::vector<Module> catalogue_modules(ModuleKind kind, std::span<const Flavour> flavours) {
+  std::vector<Module> out;
+  for (const ModuleSpec& spec : modules(kind)) {
+    if (std::find(flavours.begin(), flavours.end(), spec.flavour()) == flavours.end()) continue;
+    Module m{spec.id, {}};
+    for (const ParameterSpec& p : spec.parameters) m.params.push_back(from_catalogue(p));
+    out.push_back(std::move(m));
+  }
+  return out;
 }
 
 // A module parameter shared by several modules, in order of first appearance.
@@ -70,23 +110,13 @@ Clause greater(const std::string& param, double v) { return Clause{param, Clause
 
 }  // namespace
 
+FsmModules catalogue_fsm_modules(std::span<const Flavour> flavours) {
+  return {catalogue_modules(ModuleKind::Behaviour, flavours), catalogue_modules(ModuleKind::Condition, flavours)};
+}
+
 FsmModules chocolate_fsm_modules() {
-  FsmModules m;
-  m.behaviours = {
-      {10, {integer("RWM", "rwm", 1, 100)}},  // exploration: random-walk steps
-      {11, {}},                               // stop
-      {12, {}},                               // phototaxis
-      {13, {}},                               // anti-phototaxis
-      {14, {real("ATT", "att", 1, 5)}},       // attraction
-      {15, {real("REP", "rep", 1, 5)}},       // repulsion
-  };
-  const ModuleParam p = real("P", "p", 0, 1);
-  // Neighbour-count conditions: ξ travels in --p<i>x<j>, η in --w<i>x<j> (AM master encoding).
-  const std::vector<ModuleParam> neighbours = {integer("B", "p", 1, 10), real("W", "w", 0, 20)};
-  m.conditions = {
-      {10, {p}}, {11, {p}}, {12, {p}}, {13, neighbours}, {14, neighbours}, {15, {p}},
-  };
-  return m;
+  const Flavour chocolate[] = {Flavour::Chocolate};
+  return catalogue_fsm_modules(chocolate);
 }
 
 ParameterSpace build_fsm_space(const FsmModules& modules, const FsmSpaceOptions& o) {

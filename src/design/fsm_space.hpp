@@ -5,10 +5,12 @@
 // The module table is plain data so that the project's module catalogue can feed it; a module
 // parameter shared by several modules (same name) becomes one irace parameter whose condition
 // lists every module that has it, as the unified Demiurge grammar does.
+#include <span>
 #include <string>
 #include <vector>
 
 #include "design/parameter_space.hpp"
+#include "modules/catalogue.hpp"
 
 namespace sd::design {
 
@@ -40,7 +42,10 @@ struct FsmSpaceOptions {
   std::vector<std::string> architectures = {"fsm-config"};
 };
 
-/// Chocolate modules with two-digit ids: behaviours 10-15, conditions 10-15.
+/// The modules of the given flavours, read from the project's module catalogue
+/// (sd::modules), in id order. Empty lists for flavours that have no modules yet.
+FsmModules catalogue_fsm_modules(std::span<const Flavour> flavours);
+/// catalogue_fsm_modules({Chocolate}): behaviours 10-15, conditions 10-15.
 FsmModules chocolate_fsm_modules();
 
 /// Builds the finalized FSM parameter space. Throws std::invalid_argument on an inconsistent
