@@ -1,6 +1,8 @@
 #include "design/design_space.hpp"
 
 #include <algorithm>
+
+#include "design/bt_space.hpp"
 #include <sstream>
 #include <stdexcept>
 
@@ -58,10 +60,9 @@ std::string DesignSpaceChoice::flavours_text() const {
 
 DesignSpaceChoice resolve_design_space(const DesignSpaceRequest& request) {
   DesignSpaceChoice choice;
-  // Behaviour trees have no grammar in this build yet: --bt alone cannot be honoured.
-  if (request.bt && !request.fsm) throw std::invalid_argument("behaviour trees are not available yet; use --fsm");
-  if (request.bt) choice.notes.push_back("behaviour trees are not available yet: designing finite-state machines only");
-  choice.architectures = {"fsm"};
+  // No architecture flag means both, and the architecture becomes a tuned parameter.
+  if (request.fsm || !request.bt) choice.architectures.push_back("fsm");
+  if (request.bt || !request.fsm) choice.architectures.push_back("bt");
 
   if (request.flavours.empty()) {
     for (Flavour f : kAllFlavours)
@@ -78,9 +79,21 @@ DesignSpaceChoice resolve_design_space(const DesignSpaceRequest& request) {
 }
 
 ParameterSpace build_design_space(const DesignSpaceChoice& choice) {
-  if (choice.architectures != std::vector<std::string>{"fsm"})
-    throw std::invalid_argument("only the finite-state-machine architecture is available");
-  return build_fsm_space(catalogue_fsm_modules(choice.flavours));
+  const bool fsm = std::find(choice.architectures.begin(), choice.architectures.end(), "fsm") != choice.architectures.end();
+  const bool bt = std::find(choice.architectures.begin(), choice.architectures.end(), "bt") != choice.architectures.end();
+  if (!fsm && !bt) throw std::invalid_argument("no architecture chosen");
+  const FsmModules modules = catalogue_fsm_modules(choice.flavours);
+  FsmSpaceOptions options;
+  options.architectures.clear();
+  if (fsm) options.architectures.push_back("fsm-config");
+  if (bt) options.architectures.push_back("bt-config");
+  ParameterSpace space(options.digits);
+  // ARCH "--" c("fsm-config", "bt-config"): the first token of every string (§8.5).
+  space.add(Parameter{"ARCH", "--", ParamType::Categorical, options.architectures, {}, {}, false, {}});
+  if (fsm) add_fsm_parameters(space, modules, options);
+  if (bt) add_bt_parameters(space, modules, BtSpaceOptions{}, fsm);
+  space.finalize();
+  return space;
 }
 
 DesignSpaceRequest request_from_text(const std::string& architectures, const std::string& flavours) {

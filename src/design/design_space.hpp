@@ -18,7 +18,7 @@ struct DesignSpaceRequest {
 
 /// The space a design explores, named as the designs table stores it.
 struct DesignSpaceChoice {
-  std::vector<std::string> architectures;  // "fsm" (behaviour trees later)
+  std::vector<std::string> architectures;  // "fsm", "bt", or both (then the architecture is tuned)
   std::vector<Flavour> flavours;           // those that have modules
   std::vector<std::string> notes;          // what was asked for but left out, for the user
 
@@ -27,7 +27,7 @@ struct DesignSpaceChoice {
 };
 
 /// Throws std::invalid_argument with a message for the user: a chosen flavour without modules
-/// ("no Maple modules are available yet"), or only behaviour trees asked for.
+/// ("no Arlequin modules are available yet").
 DesignSpaceChoice resolve_design_space(const DesignSpaceRequest& request);
 
 /// The parameter space of a resolved choice.

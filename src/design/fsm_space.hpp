@@ -20,6 +20,10 @@ struct ModuleParam {
   ParamType type = ParamType::Real;
   double lower = 0.0, upper = 1.0;  // integer / real
   std::vector<std::string> values;  // categorical / ordinal
+  // Active only when the module's parameter `active_if` (irace name stem) takes one of
+  // `active_values` (Coconut: RWM with EXP 1, MU and RHO with EXP 2).
+  std::string active_if;
+  std::vector<std::string> active_values;
 };
 
 struct Module {
@@ -51,5 +55,15 @@ FsmModules chocolate_fsm_modules();
 /// Builds the finalized FSM parameter space. Throws std::invalid_argument on an inconsistent
 /// table (same parameter name with different token/type/domain, no behaviours, ...).
 ParameterSpace build_fsm_space(const FsmModules& modules, const FsmSpaceOptions& options = {});
+
+/// Adds the FSM parameters to `space` (which already holds ARCH); shared with the combined
+/// FSM + behaviour-tree space.
+void add_fsm_parameters(ParameterSpace& space, const FsmModules& modules, const FsmSpaceOptions& options);
+
+/// Adds the parameters of one module slot: for every parameter group, the irace parameter
+/// `<NAME><suffix>` with switch `--<token><suffix> `, active when `selector` holds one of the
+/// group's module ids (and its own activation clause holds).
+void add_module_parameters(ParameterSpace& space, const std::vector<Module>& modules, const std::string& suffix,
+                           const std::string& selector, const Condition& extra = {});
 
 }  // namespace sd::design

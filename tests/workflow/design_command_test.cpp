@@ -22,7 +22,7 @@ class design_command : public WorkflowTest {
   }
   std::vector<std::string> design_args(const std::string& out, int budget, int seed, int threads) const {
     return {"design", "--mission", mission_, "--budget", std::to_string(budget), "--seed", std::to_string(seed),
-            "--threads", std::to_string(threads), "--out", (scratch() / out).string(), "--json"};
+            "--threads", std::to_string(threads), "--out", (scratch() / out).string(), "--json", "--fsm", "--chocolate"};
   }
   /// Starts a design in the background and SIGKILLs it once it has saved `steps` more checkpoints.
   void kill_after(const std::vector<std::string>& args, const std::filesystem::path& folder, std::int64_t steps) {
@@ -94,15 +94,13 @@ TEST_F(design_command, FoldersThatHoldNoResumableDesignAreRefused) {
 }
 
 TEST_F(design_command, BadRequestsGetOneLineErrors) {
-  const auto minimum = run({"design", "--mission", mission_, "--budget", "300", "--out", (scratch() / "x").string()});
+  const auto minimum =
+      run({"design", "--mission", mission_, "--budget", "300", "--fsm", "--chocolate", "--out", (scratch() / "x").string()});
   expect_error(minimum, 2, "below the minimum of 1008");
   expect_error(run({"design", "--mission", mission_, "--budget", "-5"}), 2, "positive integer");
   expect_error(run({"design", "--mission", mission_, "--budget", "ten"}), 2, "positive integer");
   expect_error(run({"design", "--mission", "no-such-mission", "--budget", "2000"}), 2, "unknown mission");
-  expect_error(run({"design", "--mission", mission_, "--budget", "2000", "--maple"}), 2,
-               "no Maple modules are available yet");
-  expect_error(run({"design", "--mission", mission_, "--budget", "2000", "--bt"}), 2,
-               "behaviour trees are not available yet");
+  expect_error(run({"design", "--mission", mission_, "--budget", "200", "--bt", "--maple"}), 2, "below the minimum");
   expect_error(run({"design", "--budget", "2000"}), 2, "--mission is required");
   expect_error(run({"design", "--resume", scratch().string(), "--budget", "2000"}), 2, "--resume");
   EXPECT_FALSE(std::filesystem::exists(scratch() / "x"));
@@ -110,7 +108,9 @@ TEST_F(design_command, BadRequestsGetOneLineErrors) {
 
 TEST_F(design_command, ShowsProgressOnATerminalAndTheBestControlSoftwareAtTheEnd) {
   const auto on_terminal = run_swarmdesign_on_terminal(
-      {"design", "--mission", mission_, "--budget", "1100", "--seed", "2", "--out", (scratch() / "tty").string()}, {},
+      {"design", "--mission", mission_, "--budget", "1100", "--seed", "2", "--fsm", "--chocolate", "--out",
+       (scratch() / "tty").string()},
+      {},
       environment());
   EXPECT_EQ(on_terminal.exit_code, 0) << on_terminal.out;
   EXPECT_NE(on_terminal.out.find("iteration 1/"), std::string::npos) << on_terminal.out;
@@ -120,7 +120,7 @@ TEST_F(design_command, ShowsProgressOnATerminalAndTheBestControlSoftwareAtTheEnd
 
   // Piped, the same design prints no progress, and the configuration string it reports is
   // control software that `evaluate` accepts.
-  const auto piped = run({"design", "--mission", mission_, "--budget", "1100", "--seed", "2", "--out",
+  const auto piped = run({"design", "--mission", mission_, "--budget", "1100", "--seed", "2", "--fsm", "--chocolate", "--out",
                           (scratch() / "pipe").string()});
   EXPECT_EQ(piped.exit_code, 0);
   EXPECT_EQ(piped.err, "");

@@ -45,7 +45,6 @@ TEST_F(irace_export, WritesTheFourFilesAndRefusesBadFlags) {
   EXPECT_NE(text.find("maxExperiments = 20000"), std::string::npos) << text;
 
   expect_error(run({"irace-export", "--mission", "nope", "--out", dir.string()}), 2, "unknown mission");
-  expect_error(run({"irace-export", "--mission", "aac", "--maple", "--out", dir.string()}), 2, "no Maple modules");
   expect_error(run({"irace-export", "--mission", "aac", "--budget", "0", "--out", dir.string()}), 2, "positive integer");
 }
 
@@ -53,7 +52,8 @@ TEST_F(irace_export, TheRealIraceFindsControlSoftwareThroughTheExport) {
   if (!have_irace()) GTEST_SKIP() << "Rscript with the irace package is not installed";
   const auto mission = write_short_mission(scratch(), 5);
   const auto dir = scratch() / "irace";
-  run_ok({"irace-export", "--mission", mission.string(), "--budget", "300", "--seed", "1", "--iterations", "2", "--out",
+  run_ok({"irace-export", "--mission", mission.string(), "--fsm", "--chocolate", "--budget", "300", "--seed", "1",
+          "--iterations", "2", "--out",
           dir.string()});
   // target-runner runs the binary under test; SWARMDESIGN_HOME stays in the scratch folder.
   const std::string log = shell_output("cd '" + dir.string() + "' && SWARMDESIGN_HOME='" + home().string() +

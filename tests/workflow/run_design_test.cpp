@@ -83,7 +83,7 @@ TEST_F(run_design, TheWholeWorkflowFromSignUpToATestedDesign) {
 
 TEST_F(run_design, StatusReadsADetachedDesignWhileItRuns) {
   project_with_budget(4000);
-  const auto started = run({"run-design", "--detach", "--seed", "1", "--threads", "1"});
+  const auto started = run({"run-design", "--detach", "--fsm", "--chocolate", "--seed", "1", "--threads", "1"});
   ASSERT_EQ(started.exit_code, 0) << started.err;
   EXPECT_NE(started.out.find("swarmdesign status"), std::string::npos) << started.out;
   EXPECT_NE(started.out.find("design.log"), std::string::npos);
@@ -119,9 +119,9 @@ TEST_F(run_design, StatusReadsADetachedDesignWhileItRuns) {
 
 TEST_F(run_design, AKilledDesignIsResumedByRunDesignAndEndsAsIfNeverStopped) {
   const std::string reference = run_ok({"design", "--mission", mission_, "--budget", "1500", "--seed", "7", "--threads",
-                                        "2", "--out", (scratch() / "reference").string(), "--json"});
+                                        "2", "--fsm", "--chocolate", "--out", (scratch() / "reference").string(), "--json"});
   project_with_budget(1500);
-  run_ok({"run-design", "--detach", "--seed", "7", "--threads", "2"});
+  run_ok({"run-design", "--detach", "--fsm", "--chocolate", "--seed", "7", "--threads", "2"});
   ASSERT_TRUE(wait_until([&] { return checkpoint_step(design_folder(1)) >= 15; }, 60s));
   const int pid = status()["design"]["pid"].get<int>();
   ASSERT_EQ(::kill(pid, SIGKILL), 0);
@@ -148,11 +148,11 @@ TEST_F(run_design, RefusedRequestsChangeNothing) {
   expect_error(run({"run-design"}), 1, "has no budget");
   run_ok({"set-budget", "500"});
   const std::string configured = snapshot();
-  expect_error(run({"run-design"}), 2, "below the minimum of 1008");
-  run_ok({"set-budget", "2000"});
+  expect_error(run({"run-design", "--fsm", "--chocolate"}), 2, "below the minimum of 1008");
+  expect_error(run({"run-design"}), 2, "below the minimum");  // all flavours, both architectures
+  run_ok({"set-budget", "1200"});
   const std::string ready = snapshot();
-  expect_error(run({"run-design", "--maple"}), 2, "no Maple modules are available yet");
-  expect_error(run({"run-design", "--bt"}), 2, "behaviour trees are not available yet");
+  expect_error(run({"run-design", "--bt", "--fsm"}), 2, "below the minimum");
   expect_error(run({"run-design", "--seed", "x"}), 2, "--seed");
   EXPECT_EQ(snapshot(), ready);
   expect_error(run({"test-design"}), 2, "no finished design yet");
