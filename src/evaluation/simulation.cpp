@@ -9,7 +9,7 @@ Simulation::Simulation(const Mission& mission, const ControlSoftware& software)
     : mission_(&mission),
       software_(software),
       controller_(software_, mission.robots),
-      objective_(mission.objective) {
+      objective_(mission) {
   swarm_.resize(mission.robots);
   physics_.reset(mission.robots);
   reference_.resize(static_cast<std::size_t>(mission.robots));

@@ -3,10 +3,19 @@
 // Missions are data (JSON files in missions/ or anywhere a user puts them); loading one
 // validates every field and compiles the arena once, so evaluations only read it.
 #include <filesystem>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <variant>
 #include <vector>
 
+#include "missions/arrest_rule.hpp"
+#include "missions/objective_best_region.hpp"
+#include "missions/objective_foraging.hpp"
+#include "missions/objective_grid_exploration.hpp"
+#include "missions/objective_mean_distance.hpp"
+#include "missions/objective_network_coverage.hpp"
+#include "missions/objective_region_count.hpp"
 #include "simulator/arena.hpp"
 #include "simulator/region.hpp"
 #include "simulator/robot_model.hpp"
@@ -16,18 +25,16 @@ namespace sd {
 enum class Direction { Maximize, Minimize };
 std::string_view direction_name(Direction d);
 
-/// Objective types, each a reusable building block with its own parameters.
-namespace objectives {
-/// Sum over ticks of the number of robots whose centre is in the region (AAC).
-struct RobotsInRegionPerTick {
-  Region region;
-};
-}  // namespace objectives
+/// The objective types, each a reusable building block (objective_<idea>.hpp) whose
+/// parameters name their per-run score type. The file names them by `type`
+/// (mission_file.cpp holds the table).
+using ObjectiveParameters = std::variant<RegionCountObjective, BestRegionObjective, ForagingObjective,
+                                         GridExplorationObjective, MeanDistanceObjective, NetworkCoverageObjective>;
 
 struct ObjectiveSpec {
   std::string type;
   Direction direction = Direction::Maximize;
-  std::variant<objectives::RobotsInRegionPerTick> parameters;
+  ObjectiveParameters parameters;
 };
 
 struct Mission {
@@ -42,6 +49,7 @@ struct Mission {
   Region start;
   ArenaModel arena;
   RobotModel robot;
+  std::optional<ArrestRule> arrest;  // Coconut unbounded workspace
   ObjectiveSpec objective;
 };
 

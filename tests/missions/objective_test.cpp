@@ -9,7 +9,7 @@ namespace {
 
 TEST(Objective, AacCountsRobotsOnTheBlackSpotEveryTick) {
   const Mission m = load_mission("aac");
-  ObjectiveTracker objective(m.objective);
+  ObjectiveTracker objective(m);
   objective.reset();
   SwarmState s;
   s.resize(4);
