@@ -49,6 +49,7 @@ std::string mission_svg(const Mission& m) {
   }
   for (const FloorPatch& p : m.arena.floor_patches) grow(p.region.bounds().first, p.region.bounds().second);
   grow(m.start.bounds().first, m.start.bounds().second);
+  if (m.arrest) grow(m.arrest->jail.bounds().first, m.arrest->jail.bounds().second);
   for (const Light& l : m.arena.lights) grow(l.position.xy(), l.position.xy());
   lo = lo - Vec2{0.15, 0.15};
   hi = hi + Vec2{0.15, 0.15};
@@ -65,19 +66,22 @@ std::string mission_svg(const Mission& m) {
       << "\" fill=\"" << rgb_text(m.arena.floor_background_rgb) << "\"/>\n";
   // Patches are drawn last-first so that the first matching patch ends on top, as it wins.
   for (auto it = m.arena.floor_patches.rbegin(); it != m.arena.floor_patches.rend(); ++it)
-    out << region_element(it->region, "fill=\"" + rgb_text(it->rgb) + "\"") << "\n";
-  out << region_element(m.start, "fill=\"none\" stroke=\"#1f77b4\" stroke-width=\"0.012\" stroke-dasharray=\"0.04 0.03\"")
+    out << region_element(it->region, "class=\"patch\" fill=\"" + rgb_text(it->rgb) + "\"") << "\n";
+  out << region_element(m.start, "class=\"start\" fill=\"none\" stroke=\"#1f77b4\" stroke-width=\"0.012\" stroke-dasharray=\"0.04 0.03\"")
       << "\n";
+  if (m.arrest)  // where the Coconut arrest rule sends robots that leave
+    out << region_element(m.arrest->jail, "class=\"jail\" fill=\"#c0392b\" fill-opacity=\"0.25\" stroke=\"#c0392b\" stroke-width=\"0.012\" stroke-dasharray=\"0.04 0.03\"")
+        << "\n";
   for (const Wall& w : m.arena.walls) {
     const double angle = w.axis.angle() * 180.0 / kPi;
-    out << "<rect x=\"" << -w.half_length << "\" y=\"" << -w.half_thickness << "\" width=\"" << 2 * w.half_length
+    out << "<rect class=\"wall\" x=\"" << -w.half_length << "\" y=\"" << -w.half_thickness << "\" width=\"" << 2 * w.half_length
         << "\" height=\"" << std::max(2 * w.half_thickness, 0.012) << "\" transform=\"translate(" << w.center.x << " "
         << w.center.y << ") rotate(" << angle << ")\" fill=\"" << (w.led_color ? rgb_text(w.led_color) : "#303030")
         << "\"/>\n";
   }
   for (const Light& l : m.arena.lights) {
     if (l.intensity <= 0) continue;
-    out << "<circle cx=\"" << l.position.x << "\" cy=\"" << l.position.y << "\" r=\"0.05\" fill=\"" << rgb_text(l.rgb)
+    out << "<circle class=\"light\" cx=\"" << l.position.x << "\" cy=\"" << l.position.y << "\" r=\"0.05\" fill=\"" << rgb_text(l.rgb)
         << "\" stroke=\"#806000\" stroke-width=\"0.01\"/>\n";
   }
   out << "</g>\n</svg>\n";
