@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+
 #include "control/control_software.hpp"
 
 namespace sd {
@@ -24,8 +25,14 @@ struct ParseOptions {
 ControlSoftware parse_control_software(std::span<const std::string> tokens, ParseOptions options = {});
 ControlSoftware parse_control_software(const std::string& text, ParseOptions options = {});
 
-/// Canonical configuration string with two-digit ids, starting with --fsm-config.
+/// Canonical configuration string with two-digit ids, starting with --fsm-config, or with
+/// --bt-config for behaviour trees (format B).
 std::string to_config_string(const ControlSoftware& software);
+
+/// Behaviour trees: format B (`--nroot 3 --nchildroot K --n0 0 ...`) or Maple's original
+/// format A (`--rootnode 0 --nchildsroot K --n0 0 --nc0 1 ...`), without the --bt-config.
+ControlSoftware parse_behaviour_tree(std::span<const std::string> tokens, ParseOptions options = {});
+std::string behaviour_tree_to_string(const BehaviourTree& tree);
 
 /// Shortest text that reads back as exactly the same double.
 std::string format_number(double value);

@@ -29,11 +29,39 @@ struct Fsm {
   bool operator==(const Fsm&) const = default;
 };
 
+/// Behaviour-tree nodes as in ARGoS3-AutoMoDe's BT branch (modules-and-grammar.md §7).
+enum class BtNodeType : std::uint8_t {
+  Selector = 0,
+  SelectorStar = 1,   // selector with memory
+  Sequence = 2,
+  SequenceStar = 3,   // sequence with memory (Maple's root)
+  Negation = 4,
+  Action = 5,
+  Condition = 6,
+};
+
+inline constexpr int kMaxBtChildren = 9;  // one digit per level of node ids
+inline constexpr int kMaxBtDepth = 5;     // node ids have at most 5 digits
+
+struct BtNode {
+  BtNodeType type = BtNodeType::Selector;
+  std::vector<int> children;          // indices into BehaviourTree::nodes
+  ModuleInstance module;              // Action: behaviour; Condition: condition
+  double success_probability = 0.0;   // Action: chance per tick to succeed instead of running
+  bool operator==(const BtNode&) const = default;
+};
+
+struct BehaviourTree {
+  std::vector<BtNode> nodes;  // nodes[0] is the root; children come after their parent
+  bool operator==(const BehaviourTree&) const = default;
+};
+
 enum class Architecture { Fsm, BehaviourTree };
 
 struct ControlSoftware {
   Architecture architecture = Architecture::Fsm;
   Fsm fsm;
+  BehaviourTree bt;
   bool operator==(const ControlSoftware&) const = default;
 
   /// Union of the Input bits of every module it uses.

@@ -7,25 +7,38 @@
 namespace sd {
 
 SwarmController::SwarmController(const ControlSoftware& software, int robots)
-    : software_(&software), states_(static_cast<int>(software.fsm.states.size())) {
-  robots_.resize(static_cast<std::size_t>(robots));
-  memory_.resize(static_cast<std::size_t>(robots) * static_cast<std::size_t>(states_));
+    : software_(&software),
+      slots_(static_cast<int>(software.architecture == Architecture::Fsm ? software.fsm.states.size()
+                                                                          : software.bt.nodes.size())) {
+  const auto n = static_cast<std::size_t>(robots);
+  current_.resize(n);
+  entering_.resize(n);
+  running_.resize(n * static_cast<std::size_t>(slots_));
+  memory_.resize(n * static_cast<std::size_t>(slots_));
   reset();
 }
 
 void SwarmController::reset() {
-  for (auto& r : robots_) r = RobotExecution{};
+  const bool fsm = software_->architecture == Architecture::Fsm;
+  std::fill(current_.begin(), current_.end(), static_cast<std::int16_t>(fsm ? 0 : -1));
+  std::fill(entering_.begin(), entering_.end(), 1);
+  std::fill(running_.begin(), running_.end(), 0);
   for (auto& m : memory_) reset_behaviour(m);
 }
 
 Actuation SwarmController::step(int robot, const ReferenceModel& rm, Rng& rng) {
-  RobotExecution& exec = robots_[static_cast<std::size_t>(robot)];
-  const FsmState& state = software_->fsm.states[exec.current];
-  BehaviourMemory& memory = memory_[static_cast<std::size_t>(robot * states_ + exec.current)];
-  if (exec.entering) reset_behaviour(memory);
+  return software_->architecture == Architecture::Fsm ? step_fsm(robot, rm, rng) : step_tree(robot, rm, rng);
+}
+
+Actuation SwarmController::step_fsm(int robot, const ReferenceModel& rm, Rng& rng) {
+  const auto r = static_cast<std::size_t>(robot);
+  const auto current = static_cast<std::size_t>(current_[r]);
+  const FsmState& state = software_->fsm.states[current];
+  BehaviourMemory& memory = memory_[r * static_cast<std::size_t>(slots_) + current];
+  if (entering_[r]) reset_behaviour(memory);
   const Actuation actuation = run_behaviour(state.behaviour, memory, rm, rng);
-  if (exec.entering) {
-    exec.entering = false;
+  if (entering_[r]) {
+    entering_[r] = 0;
     return actuation;
   }
   const auto count = static_cast<std::uint32_t>(state.transitions.size());
@@ -35,12 +48,82 @@ Actuation SwarmController::step(int robot, const ReferenceModel& rm, Rng& rng) {
   for (std::uint32_t k = 0; k < count; ++k) {
     const FsmTransition& t = state.transitions[order[k]];
     if (check_condition(t.condition, rm, rng)) {
-      exec.current = static_cast<std::uint8_t>(t.target);
-      exec.entering = true;
+      current_[r] = static_cast<std::int16_t>(t.target);
+      entering_[r] = 1;
       break;
     }
   }
   return actuation;
+}
+
+Actuation SwarmController::step_tree(int robot, const ReferenceModel& rm, Rng& rng) {
+  Actuation out{0.0, 0.0};
+  const Status status = tick(robot, 0, rm, rng, out);
+  if (status != Status::Running) return {0.0, 0.0, out.led};  // the tree ended: stop this step
+  return out;
+}
+
+SwarmController::Status SwarmController::tick(int robot, int node_index, const ReferenceModel& rm, Rng& rng,
+                                              Actuation& out) {
+  const BtNode& node = software_->bt.nodes[static_cast<std::size_t>(node_index)];
+  const std::size_t slot = static_cast<std::size_t>(robot) * static_cast<std::size_t>(slots_) +
+                           static_cast<std::size_t>(node_index);
+  const auto children = static_cast<int>(node.children.size());
+  switch (node.type) {
+    case BtNodeType::Condition:
+      return check_condition(node.module, rm, rng) ? Status::Success : Status::Failure;
+    case BtNodeType::Action:
+      // Actions are not reset when they become active again (their memory persists).
+      if (node.success_probability > 0.0 && rng.bernoulli(node.success_probability)) return Status::Success;
+      out = run_behaviour(node.module, memory_[slot], rm, rng);
+      current_[static_cast<std::size_t>(robot)] = static_cast<std::int16_t>(node_index);
+      return Status::Running;
+    case BtNodeType::Negation: {
+      const Status s = tick(robot, node.children.front(), rm, rng, out);
+      return s == Status::Running ? s : (s == Status::Success ? Status::Failure : Status::Success);
+    }
+    case BtNodeType::Selector:
+      for (const int child : node.children) {
+        const Status s = tick(robot, child, rm, rng, out);
+        if (s != Status::Failure) return s;
+      }
+      return Status::Failure;
+    case BtNodeType::Sequence:
+      for (const int child : node.children) {
+        const Status s = tick(robot, child, rm, rng, out);
+        if (s != Status::Success) return s;
+      }
+      return Status::Success;
+    case BtNodeType::SelectorStar:
+      for (int c = running_[slot]; c < children; ++c) {
+        const Status s = tick(robot, node.children[static_cast<std::size_t>(c)], rm, rng, out);
+        if (s == Status::Running) {
+          running_[slot] = static_cast<std::uint8_t>(c);
+          return s;
+        }
+        if (s == Status::Success) {
+          running_[slot] = 0;
+          return s;
+        }
+      }
+      running_[slot] = 0;
+      return Status::Success;  // ARGoS3-AutoMoDe's Selector* succeeds when all children fail
+    case BtNodeType::SequenceStar:
+      for (int c = running_[slot]; c < children; ++c) {
+        const Status s = tick(robot, node.children[static_cast<std::size_t>(c)], rm, rng, out);
+        if (s == Status::Running) {
+          running_[slot] = static_cast<std::uint8_t>(c);
+          return s;
+        }
+        if (s == Status::Failure) {
+          running_[slot] = 0;
+          return s;
+        }
+      }
+      running_[slot] = 0;
+      return Status::Success;
+  }
+  return Status::Failure;
 }
 
 }  // namespace sd

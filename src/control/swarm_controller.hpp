@@ -1,6 +1,7 @@
 #pragma once
 // Runs one piece of control software on every robot of a swarm. Each robot has its own
-// execution state (current FSM state, behaviour memories); the software itself is shared.
+// execution state (current FSM state or behaviour-tree memories, behaviour memories); the
+// software itself is shared.
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -14,27 +15,37 @@ namespace sd {
 
 class SwarmController {
  public:
+  /// Keeps a reference to `software`, which must outlive the controller.
   SwarmController(const ControlSoftware& software, int robots);
+  SwarmController(ControlSoftware&&, int) = delete;
 
-  /// Start of a run: every robot in state 0, about to enter it.
+  /// Start of a run: every robot in state 0 / at the tree's first child, memories cleared.
   void reset();
-  /// One control step of robot `robot` (modules-and-grammar.md §6.2): on the step a state
-  /// is entered its behaviour is reset and no condition is checked; otherwise outgoing
-  /// transitions are tried in a random order and the first that fires is taken. The
-  /// behaviour that ran this step keeps its command either way.
+  /// One control step of robot `robot`.
   Actuation step(int robot, const ReferenceModel& rm, Rng& rng);
 
-  int current_state(int robot) const { return robots_[static_cast<std::size_t>(robot)].current; }
+  /// FSM: the robot's current state; behaviour tree: the action that ran last (-1: none).
+  int current_state(int robot) const { return current_[static_cast<std::size_t>(robot)]; }
 
  private:
-  struct RobotExecution {
-    std::uint8_t current = 0;
-    bool entering = true;
-  };
+  enum class Status : std::uint8_t { Success, Failure, Running };
+
+  /// FSM step (modules-and-grammar.md §6.2): on the step a state is entered its behaviour
+  /// is reset and no condition is checked; otherwise outgoing transitions are tried in a
+  /// random order and the first that fires is taken. The behaviour that ran this step keeps
+  /// its command either way.
+  Actuation step_fsm(int robot, const ReferenceModel& rm, Rng& rng);
+  /// Behaviour-tree step (§7.4): tick the root once; a tree that returns success or
+  /// failure stops the robot for this step.
+  Actuation step_tree(int robot, const ReferenceModel& rm, Rng& rng);
+  Status tick(int robot, int node, const ReferenceModel& rm, Rng& rng, Actuation& out);
+
   const ControlSoftware* software_;
-  int states_;
-  std::vector<RobotExecution> robots_;
-  std::vector<BehaviourMemory> memory_;  // robots x states
+  int slots_;                             // states (FSM) or nodes (tree) per robot
+  std::vector<std::int16_t> current_;     // FSM state or last action, per robot
+  std::vector<std::uint8_t> entering_;    // FSM: entering the current state
+  std::vector<std::uint8_t> running_;     // tree: remembered child of * nodes, robots x nodes
+  std::vector<BehaviourMemory> memory_;   // robots x slots
 };
 
 }  // namespace sd

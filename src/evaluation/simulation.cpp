@@ -10,7 +10,7 @@ Simulation::Simulation(const Mission& mission, const ControlSoftware& software)
       software_(software),
       controller_(software_, mission.robots),
       objective_(mission) {
-  swarm_.resize(mission.robots);
+  swarm_.resize(mission.robots, static_cast<int>(mission.arena.leds.size()));
   physics_.reset(mission.robots);
   reference_.resize(static_cast<std::size_t>(mission.robots));
   const std::uint8_t inputs = software_.inputs();
@@ -25,6 +25,7 @@ void Simulation::reset(std::uint64_t seed) {
   rng_.reseed(seed);
   tick_ = 0;
   place_robots(mission_->arena, mission_->start, swarm_, rng_);
+  for (std::size_t k = 0; k < mission_->arena.leds.size(); ++k) swarm_.arena_led_color[k] = mission_->arena.leds[k].initial_color;
   physics_.reset(mission_->robots);
   for (auto& rm : reference_) rm.reset();
   controller_.reset();
@@ -50,7 +51,7 @@ void Simulation::step() {
     }
     swarm_.wheel_left[r] = left;
     swarm_.wheel_right[r] = right;
-    swarm_.led[r] = a.led;
+    if (a.led != kLedUnchanged) swarm_.led[r] = a.led;
   }
   objective_.post_step(swarm_, tick_, rng_);
 }

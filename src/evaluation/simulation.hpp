@@ -32,6 +32,9 @@ class TickObserver {
 class Simulation {
  public:
   Simulation(const Mission& mission, const ControlSoftware& software);
+  // The controller points into software_: a copy or move would dangle.
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
 
   /// A whole evaluation: the mission's natural score for this seed.
   double run(std::uint64_t seed, TickObserver* observer = nullptr);

@@ -13,6 +13,8 @@ constexpr double kMax = epuck::kMaxWheelSpeedCm;
 /// Vectors shorter than 0.1 become "straight ahead" (AutoMoDe's small-vector fallback).
 Vec2 with_fallback(Vec2 v) { return v.squared_length() < 0.01 ? Vec2{1.0, 0.0} : v; }
 
+constexpr std::int32_t kMaxWalkSteps = 100000;  // guards r -> 0 and mu -> 1 (infinite steps)
+
 Actuation exploration(double rwm, BehaviourMemory& m, const ReferenceModel& rm, Rng& rng) {
   if (!m.turning) {
     // The step that sees an obstacle still drives forward; the turn starts next step.
@@ -22,21 +24,79 @@ Actuation exploration(double rwm, BehaviourMemory& m, const ReferenceModel& rm, 
       m.turn_steps = static_cast<std::int32_t>(rng.uniform_int(0, static_cast<std::uint32_t>(rwm)));
       m.turn_left = p.y < 0.0;  // obstacle on the right: turn left
     }
-    return {kMax, kMax, 0};
+    return {kMax, kMax};
   }
   m.turn_steps -= 1;
   if (m.turn_steps <= 0) m.turning = false;
-  return m.turn_left ? Actuation{-kMax, kMax, 0} : Actuation{kMax, -kMax, 0};
+  return m.turn_left ? Actuation{-kMax, kMax} : Actuation{kMax, -kMax};
+}
+
+bool obstacle_in_front(const ReferenceModel& rm) { return rm.proximity.squared_length() >= 0.01 && rm.proximity.x >= 0.0; }
+
+/// Coconut's exploration schemes (DEMI GetHeadingVector): stimulus S pushed away from
+/// obstacles; without a stimulus the scheme decides where to go.
+Actuation coconut(Vec2 stimulus, double k, const ModuleInstance& b, int exp_index, BehaviourMemory& m,
+                  const ReferenceModel& rm, Rng& rng) {
+  Vec2 r = with_fallback(stimulus - rm.proximity * k);
+  if (stimulus.squared_length() >= 0.01) return wheels_towards(r);
+  const auto& prm = b.parameters;
+  const int scheme = static_cast<int>(prm[static_cast<std::size_t>(exp_index)]);
+  if (scheme == 1) {
+    // Ballistic motion with a random turn in place when an obstacle is ahead.
+    const double rwm = prm[static_cast<std::size_t>(exp_index + 1)];
+    if (m.walk_steps <= 0) {
+      if (obstacle_in_front(rm)) {
+        m.walk_steps = static_cast<std::int32_t>(rng.uniform_int(0, static_cast<std::uint32_t>(rwm)));
+        m.walk_angle = rm.proximity.y < 0.0 ? kPi - 1e-4 : kPi + 1e-4;  // spin left / right
+      } else {
+        m.walk_angle = 0.0;
+      }
+    } else {
+      m.walk_steps -= 1;
+    }
+    r = Vec2::polar(1.0, m.walk_angle);
+  } else if (scheme == 2) {
+    // Random walk: power-law step lengths (exponent mu), wrapped-Cauchy turns (rho); one
+    // uniform draw feeds both, as in DEMI.
+    const double mu = prm[static_cast<std::size_t>(exp_index + 2)], rho = prm[static_cast<std::size_t>(exp_index + 3)];
+    if (m.walk_steps <= 0) {
+      const double u = rng.uniform();
+      const double length = mu > 1.0 && u > 0.0 ? std::pow(u, 1.0 / (1.0 - mu)) : INFINITY;
+      m.walk_steps = length < kMaxWalkSteps ? static_cast<std::int32_t>(std::ceil(length + 0.5)) : kMaxWalkSteps;
+      m.walk_angle = wrap_signed(2.0 * std::atan((1.0 - rho) / (1.0 + rho) * std::tan(kPi * (u - 0.5))));
+    } else {
+      m.walk_steps -= 1;
+    }
+    if (obstacle_in_front(rm)) {
+      const double phi = rm.proximity.angle();
+      const double away = phi >= 0.0 ? phi - kPi : phi + kPi;
+      m.walk_angle = (m.walk_angle + away) / 2.0;  // plain average, as in DEMI
+    }
+    r = Vec2::polar(1.0, m.walk_angle);
+  }
+  return wheels_towards(r);
+}
+
+Actuation with_led(Actuation a, double palette_index) {
+  a.led = palette_color(static_cast<int>(palette_index));
+  return a;
 }
 
 }  // namespace
 
+Vec2 color_vector(const ReferenceModel& rm, std::uint32_t rgb) {
+  Vec2 sum;
+  for (const CameraBlob& blob : rm.blobs)
+    if (blob.rgb == rgb && blob.distance_cm >= 6.0) sum += blob.direction * (1.0 / (blob.distance_cm + 1.0));
+  return sum;
+}
+
 Actuation wheels_towards(Vec2 v) {
   const double length = v.length();
-  if (length == 0.0) return {};
+  if (length == 0.0) return {0.0, 0.0};
   const double c = v.x / length;
-  if (v.y > 0.0) return {kMax * c, kMax, 0};
-  return {kMax, kMax * c, 0};
+  if (v.y > 0.0) return {kMax * c, kMax};
+  return {kMax, kMax * c};
 }
 
 void reset_behaviour(BehaviourMemory& memory) { memory = BehaviourMemory{}; }
@@ -44,25 +104,72 @@ void reset_behaviour(BehaviourMemory& memory) { memory = BehaviourMemory{}; }
 Actuation run_behaviour(const ModuleInstance& b, BehaviourMemory& memory, const ReferenceModel& rm, Rng& rng) {
   const auto& prm = b.parameters;
   switch (b.id) {
+    // Chocolate, and Maple's identical actions (parameters: rwm | att | rep).
     case 10:
+    case 40:
       return exploration(prm[0], memory, rm, rng);
     case 11:
-      return {};
+    case 41:
+      return {0.0, 0.0};
     case 12:
+    case 42:
       return wheels_towards(with_fallback(rm.light - rm.proximity * 5.0));
     case 13:
+    case 43:
       return wheels_towards(with_fallback(-rm.light - rm.proximity * 5.0));
-    case 14: {
+    case 14:
+    case 44: {
       const double alpha = std::trunc(prm[0]);  // stored as UInt8 by AutoMoDe
       return wheels_towards(with_fallback(rm.attraction(alpha) - rm.proximity * 6.0));
     }
-    case 15: {
+    case 15:
+    case 45: {
       const double alpha = std::trunc(prm[0]);
       // alpha enters twice (inside A and outside): repulsion grows with rep^2.
       return wheels_towards(with_fallback(rm.attraction(alpha) * -alpha - rm.proximity * 5.0));
     }
+    // TuttiFrutti: the Chocolate laws plus the LED colour cle (last parameter but clr).
+    case 20:
+      return with_led(exploration(prm[0], memory, rm, rng), prm[1]);
+    case 21:
+      return with_led({0.0, 0.0}, prm[0]);
+    case 24:
+      return with_led(wheels_towards(with_fallback(rm.attraction(std::trunc(prm[0])) - rm.proximity * 6.0)), prm[1]);
+    case 25: {
+      const double alpha = std::trunc(prm[0]);
+      return with_led(wheels_towards(with_fallback(rm.attraction(alpha) * -alpha - rm.proximity * 5.0)), prm[1]);
+    }
+    case 28: {  // GoToColor: vel, cle, clr; no small-vector fallback
+      const Vec2 c = color_vector(rm, palette_color(static_cast<int>(prm[2])));
+      const double length = c.length();
+      const Vec2 heading = length > 0.0 ? c * (prm[0] / length) : Vec2{prm[0], 0.0};
+      return with_led(wheels_towards(heading - rm.proximity * 6.0), prm[1]);
+    }
+    case 29: {  // GoAwayColor
+      const Vec2 c = color_vector(rm, palette_color(static_cast<int>(prm[2])));
+      const double length = c.length();
+      const Vec2 heading = length > 0.0 ? c * (-prm[0] / length) : Vec2{prm[0], 0.0};
+      return with_led(wheels_towards(heading - rm.proximity * 5.0), prm[1]);
+    }
+    // Coconut: stimulus and avoidance gain per module, exploration scheme from exp.
+    case 30:
+      return coconut({}, 1.0, b, 0, memory, rm, rng);
+    case 31:
+      return {0.0, 0.0};
+    case 32:
+      return coconut(rm.light, 5.0, b, 0, memory, rm, rng);
+    case 33:
+      return coconut(-rm.light, 5.0, b, 0, memory, rm, rng);
+    case 34: {
+      const double alpha = std::trunc(prm[0]);
+      return coconut(rm.attraction(alpha) * alpha, 6.0, b, 1, memory, rm, rng);
+    }
+    case 35: {
+      const double alpha = std::trunc(prm[0]);
+      return coconut(rm.attraction(alpha) * -alpha, 5.0, b, 1, memory, rm, rng);
+    }
     default:
-      return {};
+      return {0.0, 0.0};
   }
 }
 

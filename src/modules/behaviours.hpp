@@ -12,15 +12,25 @@ namespace sd {
 
 /// What a behaviour remembers between control steps (Exploration's turn, for instance).
 struct BehaviourMemory {
-  bool turning = false;
+  bool turning = false;        // Exploration (Chocolate, TuttiFrutti, Maple)
   bool turn_left = false;
   std::int32_t turn_steps = 0;
+  std::int32_t walk_steps = 0; // Coconut random turn / random walk
+  double walk_angle = 0.0;
 };
+
+/// A behaviour that does not touch the LEDs leaves them as they are (AutoMoDe keeps the
+/// last colour a TuttiFrutti behaviour set).
+inline constexpr std::uint32_t kLedUnchanged = 0xffffffffu;
 
 struct Actuation {
   double left_cm = 0.0, right_cm = 0.0;  // wheel speeds, cm/s
-  std::uint32_t led = 0;                 // RGB, 0 = off
+  std::uint32_t led = kLedUnchanged;     // RGB of the RGB LEDs, 0 = off
 };
+
+/// The colour vector of TuttiFrutti: sum over blobs of the colour at >= 6 cm of
+/// 1 / (distance + 1) towards the blob.
+Vec2 color_vector(const ReferenceModel& rm, std::uint32_t rgb);
 
 /// W(v) of RM1.2: outer wheel at 12 cm/s, inner at 12 cos(angle of v). The zero vector
 /// stops the robot (AutoMoDe would compute NaN speeds).

@@ -25,6 +25,10 @@ struct ParameterSpec {
   double min = 0.0, max = 0.0;   // integer and real domains (inclusive)
   std::vector<double> values;    // categorical domain
   std::string meaning;
+  // A parameter may exist only for some values of another parameter of the same module
+  // (Coconut: rwm only with exp = 1; mu and rho only with exp = 2). Empty: always.
+  std::string active_if;
+  std::vector<double> active_values;
 
   bool accepts(double value) const;
   std::string domain_text() const;
@@ -52,13 +56,20 @@ struct ModuleSpec {
   int digit() const { return id % 10; }
   /// Index of the parameter with this token, or -1.
   int parameter_index(std::string_view token) const;
+  /// Whether parameter p applies given the values of the others.
+  bool parameter_active(std::size_t p, const std::array<double, 4>& values) const;
 };
 
 /// Every module of a kind, in id order.
 std::span<const ModuleSpec> modules(ModuleKind kind);
 const ModuleSpec* find_module(ModuleKind kind, int id);
 
-/// A module with its parameter values (in the order of its spec's parameters).
+/// Colour of palette index i (TuttiFrutti, simulation palette): 0 off, 1 green, 2 blue,
+/// 3 red, 4 yellow, 5 magenta, 6 cyan; anything else is off.
+std::uint32_t palette_color(int index);
+
+/// A module with its parameter values (in the order of its spec's parameters; inactive
+/// parameters hold 0).
 struct ModuleInstance {
   int id = 0;
   std::array<double, kMaxModuleParameters> parameters{};

@@ -70,6 +70,21 @@ double Wall::segment_entry(Vec2 a, Vec2 b) const {
   return t0;
 }
 
+bool ArenaModel::camera_line_of_sight(Vec3 camera, Vec3 led, int skip_wall) const {
+  for (const std::uint16_t w : interior_walls_) {
+    if (static_cast<int>(w) == skip_wall) continue;
+    const Wall& wall = walls[w];
+    // The ray descends from the camera to the LED; it is blocked if it is inside the wall's
+    // footprint anywhere below the wall's top, i.e. at its exit from the footprint.
+    const double t_in = wall.segment_entry(camera.xy(), led.xy());
+    if (t_in > 1.0) continue;
+    const double t_out = 1.0 - wall.segment_entry(led.xy(), camera.xy());
+    const double z_out = camera.z + (led.z - camera.z) * std::min(t_out, 1.0);
+    if (z_out <= wall.height) return false;
+  }
+  return true;
+}
+
 double ArenaModel::light_clearance_fraction(std::size_t light, double height) const {
   const double z = lights[light].position.z;
   return z > height ? height / z : 1.0;

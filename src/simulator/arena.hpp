@@ -35,6 +35,14 @@ struct FloorPatch {
   std::uint32_t rgb = 0;        // for drawing
 };
 
+/// An LED on a wall block (TuttiFrutti arenas); its colour changes during a run, so the
+/// colour lives in SwarmState::arena_led_color, initialised from `initial_color`.
+struct ArenaLed {
+  Vec3 position;
+  std::uint16_t wall = 0;
+  std::uint32_t initial_color = 0;  // 0 = off
+};
+
 struct Light {
   Vec3 position;
   double intensity = 0.0;
@@ -62,6 +70,7 @@ class ArenaModel {
   double floor_background_gray = kGray50;
   std::uint32_t floor_background_rgb = 0x7f7f7f;
   std::vector<Light> lights;
+  std::vector<ArenaLed> leds;
 
   /// Builds the lookup tables; call once after filling the fields above.
   void compile();
@@ -85,6 +94,9 @@ class ArenaModel {
   /// True if no wall separates p from q (walls that enclose every robot are skipped: a
   /// segment between two robots can never cross them).
   bool line_of_sight_walls(Vec2 p, Vec2 q) const;
+  /// True if no wall stops the descending camera ray from `camera` to `led` (only walls that
+  /// can separate two points inside the arena are checked). `skip_wall` is the LED's own.
+  bool camera_line_of_sight(Vec3 camera, Vec3 led, int skip_wall = -1) const;
   /// The fraction of the way to a light beyond which a rising ray clears a body of `height`.
   double light_clearance_fraction(std::size_t light, double height) const;
 

@@ -207,20 +207,27 @@ void Physics::solve_contacts(const ArenaModel& arena, SwarmState& swarm, double 
 
 void Physics::separate_overlaps(const ArenaModel& arena, SwarmState& swarm) {
   // In a dense crowd a few solver sweeps may leave a residual approach speed; remove the
-  // resulting overlap at once so that it can never accumulate (walls last: they win).
-  for (const Contact& c : pair_contacts_) {
-    const Vec2 d = swarm.position[c.b] - swarm.position[c.a];
-    const double dist2 = d.squared_length();
-    if (dist2 >= 4.0 * kRadius * kRadius || dist2 <= 0.0) continue;
-    const double dist = std::sqrt(dist2);
-    const Vec2 push = d * (0.5 * (2.0 * kRadius - dist) / dist);
-    swarm.position[c.a] -= push;
-    swarm.position[c.b] += push;
-  }
-  for (const Contact& c : wall_contacts_) {
-    Vec2 normal;
-    const double gap = arena.walls[c.b].distance(swarm.position[c.a], &normal) - kRadius;
-    if (gap < 0.0) swarm.position[c.a] -= normal * gap;
+  // resulting overlap at once so that it can never accumulate. A push can create an
+  // overlap further along a chain or against a wall, hence a few passes; walls come last in
+  // each pass, so no robot ever ends inside a wall.
+  for (int pass = 0; pass < 4; ++pass) {
+    bool moved = false;
+    for (const Candidate& c : pair_candidates_) {
+      const Vec2 d = swarm.position[c.b] - swarm.position[c.a];
+      const double dist2 = d.squared_length();
+      if (dist2 >= 4.0 * kRadius * kRadius || dist2 <= 0.0) continue;
+      const double dist = std::sqrt(dist2);
+      const Vec2 push = d * (0.5 * (2.0 * kRadius - dist) / dist);
+      swarm.position[c.a] -= push;
+      swarm.position[c.b] += push;
+      moved = true;
+    }
+    for (const Candidate& c : wall_candidates_) {
+      Vec2 normal;
+      const double gap = arena.walls[c.b].distance(swarm.position[c.a], &normal) - kRadius;
+      if (gap < 0.0) swarm.position[c.a] -= normal * gap;
+    }
+    if (!moved) break;
   }
 }
 

@@ -223,7 +223,46 @@ void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, S
 }
 
 double neighbour_range(const RobotModel& model) {
-  return std::max({model.rab_range, model.camera_range + kRadius, epuck::kProximityRingRadius + epuck::kProximityRange + kRadius});
+  return std::max({model.rab_range, model.camera_range + std::abs(kRgbLedOffset),
+                   epuck::kProximityRingRadius + epuck::kProximityRange + kRadius});
+}
+
+void sense_camera(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm) {
+  const double range_sq = model.camera_range * model.camera_range;
+  constexpr double kDz = epuck::kRgbLedElevation - epuck::kCameraElevation;
+  for (int i = 0; i < swarm.size; ++i) {
+    const auto r = static_cast<std::size_t>(i);
+    CameraBlob* out = swarm.blobs.data() + r * static_cast<std::size_t>(swarm.blobs_per_robot);
+    std::uint16_t count = 0;
+    const Vec2 p = swarm.position[r], h = swarm.heading[r];
+    const Vec3 camera{p.x, p.y, epuck::kCameraElevation};
+    auto add = [&](std::uint32_t rgb, Vec2 offset) {
+      const double d = offset.length();
+      const Vec2 local{h.x * offset.x + h.y * offset.y, h.x * offset.y - h.y * offset.x};
+      out[count++] = {rgb, d > 0.0 ? local * (1.0 / d) : Vec2{1.0, 0.0}, d * 100.0};
+    };
+    // Robots never occlude LEDs: the ray stays above their 7.6 cm tops down to 7.65 cm.
+    for (const auto& nb : swarm.neighbours_of(i)) {
+      const std::uint32_t rgb = swarm.led[nb.other];
+      if (rgb == 0) continue;
+      const Vec2 led = swarm.position[nb.other] + swarm.heading[nb.other] * kRgbLedOffset;
+      const Vec2 offset = led - p;
+      if (offset.squared_length() + kDz * kDz >= range_sq) continue;
+      if (!arena.camera_line_of_sight(camera, {led.x, led.y, epuck::kRgbLedElevation})) continue;
+      add(rgb, offset);
+    }
+    for (std::size_t k = 0; k < arena.leds.size(); ++k) {
+      const std::uint32_t rgb = swarm.arena_led_color[k];
+      if (rgb == 0) continue;
+      const ArenaLed& led = arena.leds[k];
+      const Vec2 offset = led.position.xy() - p;
+      const double dz = led.position.z - epuck::kCameraElevation;
+      if (offset.squared_length() + dz * dz >= range_sq) continue;
+      if (!arena.camera_line_of_sight(camera, led.position, led.wall)) continue;
+      add(rgb, offset);
+    }
+    swarm.blob_count[r] = count;
+  }
 }
 
 void sense(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng, SensorSet sensors) {
@@ -232,6 +271,7 @@ void sense(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, 
   if (sensors.proximity) sense_proximity(arena, model, swarm, rng);
   if (sensors.light) sense_light(arena, model, swarm, rng);
   if (sensors.ground) sense_ground(arena, model, swarm, rng);
+  if (sensors.camera) sense_camera(arena, model, swarm);
 }
 
 }  // namespace sd

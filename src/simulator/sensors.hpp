@@ -24,6 +24,12 @@ void sense_proximity(const ArenaModel& arena, const RobotModel& model, SwarmStat
 void sense_light(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng);
 void sense_ground(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng);
 void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng);
+/// Omnidirectional camera (RM3.0): a blob per lit LED of another robot (its rear RGB LED,
+/// the one AutoMoDe lights in simulation) and per lit arena LED within range.
+void sense_camera(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm);
+
+/// Where a robot's lit RGB LED is: index 2, at the rear, 1 mm outside the body.
+inline constexpr double kRgbLedOffset = -0.036;
 
 /// All of the above, in a fixed order (the order of random draws is part of determinism).
 void sense(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng, SensorSet sensors = {});

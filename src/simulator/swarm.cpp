@@ -2,7 +2,7 @@
 
 namespace sd {
 
-void SwarmState::resize(int robots) {
+void SwarmState::resize(int robots, int arena_leds) {
   size = robots;
   const auto n = static_cast<std::size_t>(robots);
   position.assign(n, {});
@@ -18,6 +18,9 @@ void SwarmState::resize(int robots) {
   rab.assign(n * rab_stride(), {});
   rab_count.assign(n, 0);
   blob_count.assign(n, 0);
+  arena_led_color.assign(static_cast<std::size_t>(arena_leds), 0);
+  blobs_per_robot = static_cast<int>(rab_stride()) + arena_leds;
+  blobs.assign(n * static_cast<std::size_t>(blobs_per_robot), {});
   neighbours.assign(n * rab_stride(), {});
   neighbour_count.assign(n, 0);
   distance_sq.assign(n * n, 0.0);

@@ -23,8 +23,9 @@ struct RabPacket {
 /// A colour blob seen by the omnidirectional camera.
 struct CameraBlob {
   std::uint32_t rgb;
-  double angle;        // in the robot's frame
-  double distance_cm;
+  Vec2 direction;      // unit vector towards the LED, in the robot's frame
+  double distance_cm;  // horizontal distance
+  double angle() const { return direction.angle(); }
 };
 
 /// One unordered pair of robots, refreshed every tick after physics.
@@ -43,6 +44,7 @@ struct SwarmState {
   std::vector<Vec2> velocity;                  // body velocity, world frame
   std::vector<double> wheel_left, wheel_right; // m/s, applied during the next physics step
   std::vector<std::uint32_t> led;              // RGB LEDs colour, 0 = off
+  std::vector<std::uint32_t> arena_led_color;  // per ArenaModel::leds, 0 = off
 
   // Raw sensor readings of this tick, in [0, 1].
   std::vector<std::array<double, 8>> proximity;
@@ -72,7 +74,7 @@ struct SwarmState {
     return {neighbours.data() + static_cast<std::size_t>(robot) * rab_stride(), neighbour_count[static_cast<std::size_t>(robot)]};
   }
 
-  void resize(int robots);
+  void resize(int robots, int arena_leds = 0);
   std::size_t rab_stride() const { return static_cast<std::size_t>(size > 1 ? size - 1 : 1); }
 };
 

@@ -1,0 +1,40 @@
+#pragma once
+// Hand-built SwarmStates for reference-model tests.
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "robot/reference_model.hpp"
+#include "simulator/swarm.hpp"
+
+namespace sd::test {
+
+/// The reported sensor angles of modules-and-grammar.md §2.1, in radians.
+inline constexpr std::array<double, 8> kReportedAngles = {0.2967, 0.8727, 1.5708, 2.6180,
+                                                          3.6654, 4.7122, 5.4109, 5.9874};
+inline constexpr double kAngleTolerance = 2e-4;
+
+inline Vec2 unit_at(double angle) { return {std::cos(angle), std::sin(angle)}; }
+
+/// A swarm of `robots` with every sensor silent.
+inline SwarmState silent_swarm(int robots = 2) {
+  SwarmState s;
+  s.resize(robots);
+  return s;
+}
+
+struct Packet {
+  double range_cm;
+  double bearing;
+  std::uint16_t sender;
+};
+
+/// Replaces robot `robot`'s packets of this tick.
+inline void set_packets(SwarmState& s, int robot, const std::vector<Packet>& packets) {
+  const std::size_t base = static_cast<std::size_t>(robot) * s.rab_stride();
+  for (std::size_t k = 0; k < packets.size(); ++k)
+    s.rab[base + k] = RabPacket{packets[k].range_cm, unit_at(packets[k].bearing), packets[k].sender};
+  s.rab_count[static_cast<std::size_t>(robot)] = static_cast<std::uint16_t>(packets.size());
+}
+
+}  // namespace sd::test
