@@ -24,7 +24,7 @@ Simulation::Simulation(const Mission& mission, const ControlSoftware& software)
 void Simulation::reset(std::uint64_t seed) {
   rng_.reseed(seed);
   tick_ = 0;
-  place_robots(mission_->arena, mission_->start, swarm_, rng_);
+  place_robots(mission_->arena, [this](Rng& rng) { return mission_->draw_start(rng); }, swarm_, rng_);
   for (std::size_t k = 0; k < mission_->arena.leds.size(); ++k) swarm_.arena_led_color[k] = mission_->arena.leds[k].initial_color;
   physics_.reset(mission_->robots);
   for (auto& rm : reference_) rm.reset();

@@ -30,12 +30,17 @@ Wall make_wall(Vec2 center, Vec2 axis, double length, double thickness, double h
   return w;
 }
 
-void read_walls(const Field& f, ArenaModel& arena) {
+void read_walls(const Field& f, Mission& m) {
+  ArenaModel& arena = m.arena;
   for (std::size_t i = 0; i < f.array().size(); ++i) {
     const Field item = f.at(i);
-    item.only({"box", "regular_polygon"});
-    if (item.raw().size() != 1) item.fail("expected exactly one of box, regular_polygon");
-    if (item.has("box")) {
+    item.only({"box", "regular_polygon", "led_polygon"});
+    if (item.raw().size() != 1) item.fail("expected exactly one of box, regular_polygon, led_polygon");
+    if (item.has("led_polygon")) {
+      // Events address LED blocks by side and block number: one LED arena per mission.
+      if (!m.led_arena.empty()) item.at("led_polygon").fail("a mission has at most one led_polygon");
+      m.led_arena = read_led_polygon(item.at("led_polygon"), arena);
+    } else if (item.has("box")) {
       // ARGoS <box size="sx,sy,sz"> with a yaw: local x and y extents rotated by the yaw.
       const Field b = item.at("box");
       b.only({"center", "size", "yaw", "height"});
@@ -72,15 +77,13 @@ void read_walls(const Field& f, ArenaModel& arena) {
         const double phi = first + kTwoPi * k / sides;
         arena.walls.push_back(make_wall(Vec2::polar(apothem, phi), Vec2::polar(1.0, phi + kPi / 2), length, thickness, height));
       }
-    } else {
-      item.fail("expected {\"box\": ...} or {\"regular_polygon\": ...}");
     }
   }
 }
 
 void read_arena(const Field& f, Mission& m) {
   f.only({"walls", "floor", "lights"});
-  if (f.has("walls")) read_walls(f.at("walls"), m.arena);
+  if (f.has("walls")) read_walls(f.at("walls"), m);
   if (f.has("floor")) {
     const Field floor = f.at("floor");
     floor.only({"background", "patches"});
@@ -138,6 +141,7 @@ const ObjectiveType kObjectiveTypes[] = {
     {"grid_exploration", read_grid_exploration},
     {"mean_distance_to_robots", read_mean_distance},
     {"largest_network_coverage", read_network_coverage},
+    {"stop_then_move", read_stop_then_move},
 };
 
 ObjectiveSpec read_objective(const Field& f) {
@@ -156,6 +160,27 @@ ObjectiveSpec read_objective(const Field& f) {
     known += (known.empty() ? "" : ", ") + std::string(type.name);
   }
   f.at("type").fail("unknown objective type '" + spec.type + "' (known: " + known + ")");
+}
+
+void read_events(const Field& f, Mission& m) {
+  for (std::size_t i = 0; i < f.items(); ++i) {
+    MissionEvent event = read_mission_event(f.at(i), m.led_arena, m.ticks);
+    for (const MissionEvent& other : m.events)
+      if (other.name == event.name) f.at(i).at("name").fail("another event is named '" + event.name + "'");
+    m.events.push_back(std::move(event));
+  }
+}
+
+/// Objectives that refer to a mission event name it; find its index once, here.
+void resolve_event_names(const Field& f, Mission& m) {
+  auto* stop = std::get_if<StopThenMoveObjective>(&m.objective.parameters);
+  if (!stop) return;
+  for (std::size_t e = 0; e < m.events.size(); ++e)
+    if (m.events[e].name == stop->switch_event) {
+      stop->event = e;
+      return;
+    }
+  f.at("switch_event").fail("no event is named '" + stop->switch_event + "'");
 }
 
 /// The box that holds every wall, if there are walls.
@@ -221,7 +246,7 @@ Mission parse_mission(const std::string& json_text, const std::string& source) {
     throw MissionError(std::string("not valid JSON: ") + e.what());
   }
   const Field root(document, "");
-  root.only({"name", "title", "origin", "description", "duration", "robots", "arena", "start", "robot", "arrest", "objective"});
+  root.only({"name", "title", "origin", "description", "duration", "robots", "arena", "start", "robot", "arrest", "events", "objective"});
   Mission m;
   m.source = source;
   m.name = root.at("name").text();
@@ -236,10 +261,17 @@ Mission parse_mission(const std::string& json_text, const std::string& source) {
   m.robots = root.at("robots").integer();
   if (m.robots < 1 || m.robots > 1000) root.at("robots").fail("must be between 1 and 1000");
   read_arena(root.at("arena"), m);
-  m.start = read_region(root.at("start"));
+  if (const auto arc = read_jittered_arc(root.at("start"))) {
+    m.start_arc = arc;
+    m.start = arc->support();
+  } else {
+    m.start = read_region(root.at("start"));
+  }
   if (root.has("robot")) read_robot_model(root.at("robot"), m.robot);
   if (root.has("arrest")) m.arrest = read_arrest_rule(root.at("arrest"));
+  if (root.has("events")) read_events(root.at("events"), m);
   m.objective = read_objective(root.at("objective"));
+  resolve_event_names(root.at("objective"), m);
   check_patches_touch_arena(root, m);
   check_start_inside_walls(root, m);
   check_swarm_fits(root, m);

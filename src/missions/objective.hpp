@@ -1,7 +1,8 @@
 #pragma once
 // Scoring a run, and the mission's own rules, as ARGoS' loop-function PostStep: after every
 // tick (after that tick's physics and control) the mission first applies its rules (the
-// Coconut arrest rule may move robots), then updates its objective. Any sampling draws from
+// Coconut arrest rule may move robots), then its events (TuttiFrutti LED colours, whose
+// random choices are drawn at tick 1), then updates its objective. Any sampling draws from
 // the run's generator. One tracker serves many runs of one mission: reset() between runs.
 #include <variant>
 
@@ -30,10 +31,11 @@ class ObjectiveTracker {
     using type = std::variant<typename P::Score...>;
   };
   using Score = ScoresOf<ObjectiveParameters>::type;
-  static Score make_score(const Mission& mission);
+  static Score make_score(const Mission& mission, const EventTimeline& events);
 
   const Mission* mission_;
-  Score score_;
+  EventTimeline events_;
+  Score score_;  // after events_: a score may read the event ticks
 };
 
 }  // namespace sd

@@ -12,12 +12,14 @@
 namespace sd {
 
 class Field;
+class EventTimeline;
 
-/// The size of the run a score is built for: swarm size and number of ticks T. Objectives
-/// "computed at the end" (ARGoS PostExperiment) finalise in post_step at tick T.
-struct RunShape {
+/// What a score is built for: swarm size N, number of ticks T (objectives "computed at the
+/// end", ARGoS PostExperiment, finalise in post_step at tick T) and the run's mission events.
+struct RunContext {
   int robots = 0;
   int ticks = 0;
+  const EventTimeline* events = nullptr;
 };
 
 }  // namespace sd

@@ -15,11 +15,11 @@ BestRegionObjective read_best_region(const Field& f) {
   return o;
 }
 
-BestRegionScore::BestRegionScore(const BestRegionObjective& params, RunShape shape)
-    : params_(&params), shape_(shape), counts_(params.regions.size()) {}
+BestRegionScore::BestRegionScore(const BestRegionObjective& params, RunContext run)
+    : params_(&params), run_(run), counts_(params.regions.size()) {}
 
 void BestRegionScore::post_step(const SwarmState& swarm, int tick, Rng& /*rng*/) {
-  if (tick != shape_.ticks) return;  // PostExperiment: the final positions only
+  if (tick != run_.ticks) return;  // PostExperiment: the final positions only
   std::fill(counts_.begin(), counts_.end(), 0);
   for (int i = 0; i < swarm.size; ++i) {
     const Vec2 p = swarm.position[static_cast<std::size_t>(i)];
@@ -29,7 +29,7 @@ void BestRegionScore::post_step(const SwarmState& swarm, int tick, Rng& /*rng*/)
         break;
       }
   }
-  value_ = static_cast<double>(*std::max_element(counts_.begin(), counts_.end())) / shape_.robots;
+  value_ = static_cast<double>(*std::max_element(counts_.begin(), counts_.end())) / run_.robots;
 }
 
 }  // namespace sd

@@ -22,14 +22,14 @@ BestRegionObjective read_best_region(const Field& f);
 
 class BestRegionScore {
  public:
-  BestRegionScore(const BestRegionObjective& params, RunShape shape);
+  BestRegionScore(const BestRegionObjective& params, RunContext run);
   void reset() { value_ = 0.0; }
   void post_step(const SwarmState& swarm, int tick, Rng& rng);
   double value() const { return value_; }
 
  private:
   const BestRegionObjective* params_;
-  RunShape shape_;
+  RunContext run_;
   std::vector<int> counts_;
   double value_ = 0.0;
 };

@@ -20,8 +20,8 @@ ForagingObjective read_foraging(const Field& f) {
   return o;
 }
 
-ForagingScore::ForagingScore(const ForagingObjective& params, RunShape shape)
-    : params_(&params), carrying_(static_cast<std::size_t>(shape.robots), kNothing) {}
+ForagingScore::ForagingScore(const ForagingObjective& params, RunContext run)
+    : params_(&params), carrying_(static_cast<std::size_t>(run.robots), kNothing) {}
 
 void ForagingScore::reset() {
   std::fill(carrying_.begin(), carrying_.end(), kNothing);

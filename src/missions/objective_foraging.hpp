@@ -30,7 +30,7 @@ ForagingObjective read_foraging(const Field& f);
 
 class ForagingScore {
  public:
-  ForagingScore(const ForagingObjective& params, RunShape shape);
+  ForagingScore(const ForagingObjective& params, RunContext run);
   void reset();
   void post_step(const SwarmState& swarm, int tick, Rng& rng);
   double value() const { return value_; }

@@ -15,7 +15,7 @@ GridExplorationObjective read_grid_exploration(const Field& f) {
   return o;
 }
 
-GridExplorationScore::GridExplorationScore(const GridExplorationObjective& params, RunShape)
+GridExplorationScore::GridExplorationScore(const GridExplorationObjective& params, RunContext)
     : params_(&params), ages_(static_cast<std::size_t>(params.cells * params.cells), 0) {}
 
 void GridExplorationScore::reset() {

@@ -26,7 +26,7 @@ GridExplorationObjective read_grid_exploration(const Field& f);
 
 class GridExplorationScore {
  public:
-  GridExplorationScore(const GridExplorationObjective& params, RunShape shape);
+  GridExplorationScore(const GridExplorationObjective& params, RunContext run);
   void reset();
   void post_step(const SwarmState& swarm, int tick, Rng& rng);
   double value() const { return total_ / static_cast<double>(ages_.size()); }

@@ -66,9 +66,9 @@ MeanDistanceObjective read_mean_distance(const Field& f) {
   return o;
 }
 
-MeanDistanceScore::MeanDistanceScore(const MeanDistanceObjective& params, RunShape shape)
-    : params_(&params), shape_(shape) {
-  selected_.reserve(static_cast<std::size_t>(shape.robots));
+MeanDistanceScore::MeanDistanceScore(const MeanDistanceObjective& params, RunContext run)
+    : params_(&params), run_(run) {
+  selected_.reserve(static_cast<std::size_t>(run.robots));
 }
 
 double MeanDistanceScore::mean_distance(const MeanDistanceTerm& term, const SwarmState& swarm, Rng& rng) {
@@ -90,7 +90,7 @@ double MeanDistanceScore::mean_distance(const MeanDistanceTerm& term, const Swar
 }
 
 void MeanDistanceScore::post_step(const SwarmState& swarm, int tick, Rng& rng) {
-  if (tick != shape_.ticks) return;  // PostExperiment: the final positions only
+  if (tick != run_.ticks) return;  // PostExperiment: the final positions only
   double f = params_->offset;
   for (const MeanDistanceTerm& term : params_->terms) f += term.weight * mean_distance(term, swarm, rng) / term.normalizer;
   value_ = std::max(params_->at_least, f);

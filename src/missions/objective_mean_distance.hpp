@@ -56,7 +56,7 @@ MeanDistanceObjective read_mean_distance(const Field& f);
 
 class MeanDistanceScore {
  public:
-  MeanDistanceScore(const MeanDistanceObjective& params, RunShape shape);
+  MeanDistanceScore(const MeanDistanceObjective& params, RunContext run);
   void reset() { value_ = 0.0; }
   void post_step(const SwarmState& swarm, int tick, Rng& rng);
   double value() const { return value_; }
@@ -65,7 +65,7 @@ class MeanDistanceScore {
 
  private:
   const MeanDistanceObjective* params_;
-  RunShape shape_;
+  RunContext run_;
   std::vector<Vec2> selected_;  // the robots a term looks at
   double value_ = 0.0;
 };

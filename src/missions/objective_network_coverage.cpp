@@ -20,9 +20,9 @@ NetworkCoverageObjective read_network_coverage(const Field& f) {
   return o;
 }
 
-NetworkCoverageScore::NetworkCoverageScore(const NetworkCoverageObjective& params, RunShape shape)
-    : params_(&params), shape_(shape) {
-  const auto n = static_cast<std::size_t>(shape.robots);
+NetworkCoverageScore::NetworkCoverageScore(const NetworkCoverageObjective& params, RunContext run)
+    : params_(&params), run_(run) {
+  const auto n = static_cast<std::size_t>(run.robots);
   label_.resize(n);
   stack_.reserve(n);
   group_.reserve(n);
@@ -91,7 +91,7 @@ double NetworkCoverageScore::covered_area(Rng& rng) const {
 }
 
 void NetworkCoverageScore::post_step(const SwarmState& swarm, int tick, Rng& rng) {
-  if (tick != shape_.ticks) return;  // PostExperiment: the final positions only
+  if (tick != run_.ticks) return;  // PostExperiment: the final positions only
   largest_component(swarm);
   value_ = covered_area(rng);
 }

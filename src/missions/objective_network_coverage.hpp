@@ -33,7 +33,7 @@ NetworkCoverageObjective read_network_coverage(const Field& f);
 
 class NetworkCoverageScore {
  public:
-  NetworkCoverageScore(const NetworkCoverageObjective& params, RunShape shape);
+  NetworkCoverageScore(const NetworkCoverageObjective& params, RunContext run);
   void reset() { value_ = 0.0; }
   void post_step(const SwarmState& swarm, int tick, Rng& rng);
   double value() const { return value_; }
@@ -44,7 +44,7 @@ class NetworkCoverageScore {
 
  private:
   const NetworkCoverageObjective* params_;
-  RunShape shape_;
+  RunContext run_;
   std::vector<std::int32_t> label_;
   std::vector<std::uint16_t> stack_;
   std::vector<Vec2> group_;

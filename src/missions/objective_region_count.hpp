@@ -20,7 +20,7 @@ RegionCountObjective read_region_count(const Field& f);
 
 class RegionCountScore {
  public:
-  RegionCountScore(const RegionCountObjective& params, RunShape) : params_(&params) {}
+  RegionCountScore(const RegionCountObjective& params, RunContext) : params_(&params) {}
   void reset() { value_ = 0.0; }
   void post_step(const SwarmState& swarm, int tick, Rng& rng);
   double value() const { return value_; }

@@ -46,6 +46,10 @@ const std::map<std::string, Expectation>& expected_catalogue() {
       {"coconut-foraging", {Direction::Minimize, -320, 0, true}},
       {"grid-exploration", {Direction::Minimize, 4 * 7194, 719400, false}},
       {"grid-exploration-unbounded", {Direction::Minimize, 4 * 7194, 719400, false}},
+      // TuttiFrutti foraging: source to nest is at least 2 x 1.13 m, so 6 items per robot.
+      {"tutti-aggregation", {Direction::Minimize, 0, 24000, true}},
+      {"tutti-stop", {Direction::Minimize, 0, 24000, true}},
+      {"tutti-foraging", {Direction::Minimize, -120, 120, true}},
   };
   return m;
 }

@@ -173,6 +173,36 @@ TEST(MissionFile, ArrestRuleFieldsAreChecked) {
                "arrest.trials: must be between 1 and 100000");
 }
 
+const char* kLedMission = R"({
+  "name": "leds", "duration": 10, "robots": 2,
+  "arena": {"walls": [{"led_polygon": {"sides": 8, "blocks": 3, "block_length": 0.25}}]},
+  "start": {"jittered_arc": {"center": [0, 0], "radius": 0.2, "jitter": 0.1}},
+  "events": [{"name": "signal", "tick": {"uniform": [40, 60]}, "set_leds": [{"side": "random", "block": 2, "color": "green"}]}],
+  "objective": {"type": "stop_then_move", "switch_event": "signal", "threshold": 0.0005, "direction": "minimize"}
+})";
+
+TEST(MissionFile, LedWallsEventsAndStartArcsAreChecked) {
+  EXPECT_NO_THROW(parse_mission(kLedMission, "test"));
+  const std::string ok = kLedMission;
+  expect_error(replace(ok, "\"side\": \"random\"", "\"side\": 9"), "events[0].set_leds[0].side: must be between 1 and 8");
+  expect_error(replace(ok, "\"block\": 2", "\"block\": \"sometimes\""), "events[0].set_leds[0].block: expected a block number, \"every\" or \"random\"");
+  expect_error(replace(ok, "[40, 60]", "[60, 40]"), "events[0].tick.uniform[1]: must be between 60 and 100");
+  expect_error(replace(ok, "[40, 60]", "[40, 200]"), "events[0].tick.uniform[1]: must be between 40 and 100");
+  expect_error(replace(ok, "\"color\": \"green\"", "\"color\": \"greenish\""), "events[0].set_leds[0].color: unknown colour");
+  expect_error(replace(ok, "\"switch_event\": \"signal\"", "\"switch_event\": \"whistle\""), "objective.switch_event: no event is named 'whistle'");
+  expect_error(replace(ok, "\"events\": [", "\"events\": [{\"name\": \"signal\", \"tick\": 1, \"set_leds\": [{\"color\": \"red\"}]}, "),
+               "events[1].name: another event is named 'signal'");
+  expect_error(replace(ok, "\"block_length\": 0.25}}", "\"block_length\": 0.25}}, {\"led_polygon\": {\"sides\": 4, \"blocks\": 1, \"block_length\": 0.1}}"),
+               "arena.walls[1].led_polygon: a mission has at most one led_polygon");
+  expect_error(replace(ok, "\"blocks\": 3", "\"blocks\": 0"), "arena.walls[0].led_polygon.blocks: must be between 1 and 64");
+  expect_error(replace(ok, "\"jitter\": 0.1", "\"jitter\": 0.1, \"spin\": 2"), "start.jittered_arc.spin: unknown field");
+  expect_error(replace(ok, "\"radius\": 0.2, \"jitter\": 0.1", "\"radius\": 0.9, \"jitter\": 0.1"), "start: reaches outside the walls");
+  // Events need LED walls to act on.
+  expect_error(replace(kValid, "\"objective\"", R"("events": [{"name": "e", "tick": 1, "set_leds": [{"color": "red"}]}], "objective")"),
+               "events[0].set_leds: the arena has no LED walls");
+  expect_error(replace(ok, "\"threshold\": 0.0005", "\"threshold\": 0"), "objective.threshold: must be positive");
+}
+
 TEST(MissionFile, UnknownMissionNameIsAClearError) {
   try {
     load_mission("atlantis");
