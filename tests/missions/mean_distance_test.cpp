@@ -13,18 +13,8 @@ namespace sd {
 namespace {
 
 using test::place;
+using test::end_time_value;
 using test::swarm_parked_at;
-
-/// The objective after the last tick; checks that nothing is scored before it.
-double final_value(const Mission& m, SwarmState& s, std::uint64_t seed = 1) {
-  ObjectiveTracker objective(m);
-  objective.reset();
-  Rng rng(seed);
-  objective.post_step(s, m.ticks - 1, rng);
-  EXPECT_EQ(objective.value(), 0.0) << "scored before the last tick";
-  objective.post_step(s, m.ticks, rng);
-  return objective.value();
-}
 
 TEST(MeanDistance, ExactWhenEverySampleIsAtTheSameDistance) {
   // Points on a circle of radius 0.5 around robot 0: d = 0.5 for every sample.
@@ -59,7 +49,7 @@ TEST(MeanDistance, CfaIsZeroWhenEveryRobotIsOnAForbiddenArea) {
   SwarmState s = swarm_parked_at(m.robots, {0.5, 0.5});
   place(s, {{0.5, -0.5}, {-0.5, 0.0}, {-0.2, 0.0}});  // (-0.2, 0) is on the rim of (-0.5, 0)
   // E[d] = 2.5 (no allowed robot): F = max(0, (2.5 - 2.5) * 100) = 0.
-  EXPECT_NEAR(final_value(m, s), 0.0, 1e-9);
+  EXPECT_NEAR(end_time_value(m, s), 0.0, 1e-9);
 }
 
 TEST(MeanDistance, CfaSamplesArePolarUniformNotAreaUniform) {
@@ -69,10 +59,10 @@ TEST(MeanDistance, CfaSamplesArePolarUniformNotAreaUniform) {
   s.position[1] = {-0.2, 0.0};                            // on the rim of (-0.5, 0): forbidden
   // d = rho ~ U(0, 1.2): E[d] = 0.6, F = (2.5 - 0.6) * 100 = 190 (area-uniform points would
   // give E[d] = 0.8, F = 170). sd(rho) = 1.2 / sqrt(12) = 0.346, so F has sd 0.35.
-  EXPECT_NEAR(final_value(m, s, 1), 190.0, 1.5);
-  EXPECT_NEAR(final_value(m, s, 2), 190.0, 1.5);
-  EXPECT_EQ(final_value(m, s, 7), final_value(m, s, 7)) << "same seed, same score";
-  EXPECT_NE(final_value(m, s, 7), final_value(m, s, 8)) << "the samples come from the run's generator";
+  EXPECT_NEAR(end_time_value(m, s, 1), 190.0, 1.5);
+  EXPECT_NEAR(end_time_value(m, s, 2), 190.0, 1.5);
+  EXPECT_EQ(end_time_value(m, s, 7), end_time_value(m, s, 7)) << "same seed, same score";
+  EXPECT_NE(end_time_value(m, s, 7), end_time_value(m, s, 8)) << "the samples come from the run's generator";
 }
 
 TEST(MeanDistance, SpcWithNobodyOnEitherPatchIsTheWorstValue) {
@@ -81,7 +71,7 @@ TEST(MeanDistance, SpcWithNobodyOnEitherPatchIsTheWorstValue) {
   SwarmState s = swarm_parked_at(m.robots, {0.0, 0.8});
   // A robot 0.05 m off the circle is not "on the perimeter" (tolerance 0.04).
   s.position[0] = {0.95, 0.0};
-  EXPECT_NEAR(final_value(m, s), 0.85 / 0.08 + 0.6 / 0.06, 1e-9);  // 20.625
+  EXPECT_NEAR(end_time_value(m, s), 0.85 / 0.08 + 0.6 / 0.06, 1e-9);  // 20.625
 }
 
 TEST(MeanDistance, SpcAreaTermWithOneRobotAtTheSquaresCentre) {
@@ -91,11 +81,11 @@ TEST(MeanDistance, SpcAreaTermWithOneRobotAtTheSquaresCentre) {
   // Mean distance from the centre of a square of side a to a uniform point:
   // a (sqrt 2 + ln(1 + sqrt 2)) / 6 = 0.2296 for a = 0.6 (sd 0.085, so 0.034 after / 0.08).
   const double d_a = 0.6 * (std::sqrt(2.0) + std::log(1.0 + std::sqrt(2.0))) / 6.0;
-  EXPECT_NEAR(final_value(m, s), d_a / 0.08 + 0.6 / 0.06, 0.15);
+  EXPECT_NEAR(end_time_value(m, s), d_a / 0.08 + 0.6 / 0.06, 0.15);
   // The square's bounds are inclusive: a robot on its corner counts. From a corner the mean
   // distance is a (sqrt 2 + ln(1 + sqrt 2)) / 3 (sd 0.068 after / 0.08).
   s.position[0] = {-0.3, 0.3};
-  EXPECT_NEAR(final_value(m, s), 2.0 * d_a / 0.08 + 0.6 / 0.06, 0.3);
+  EXPECT_NEAR(end_time_value(m, s), 2.0 * d_a / 0.08 + 0.6 / 0.06, 0.3);
 }
 
 TEST(MeanDistance, SpcPerimeterTermWithOneRobotOnTheCircle) {
@@ -105,10 +95,10 @@ TEST(MeanDistance, SpcPerimeterTermWithOneRobotOnTheCircle) {
   // A sample at angle theta from the robot is a chord 0.6 |sin(theta / 2)| away: mean
   // 0.6 * 2 / pi = 0.382 (sd 0.185, so 0.1 after / 0.06).
   const double d_p = 0.6 * 2.0 / std::numbers::pi;
-  EXPECT_NEAR(final_value(m, s), 0.85 / 0.08 + d_p / 0.06, 0.4);
+  EXPECT_NEAR(end_time_value(m, s), 0.85 / 0.08 + d_p / 0.06, 0.4);
   // 0.035 m off the circle still counts as on the perimeter.
   s.position[0] = {0.935, 0.0};
-  EXPECT_LT(final_value(m, s), 18.0);
+  EXPECT_LT(end_time_value(m, s), 18.0);
 }
 
 }  // namespace

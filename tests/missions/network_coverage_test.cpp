@@ -13,6 +13,7 @@ namespace sd {
 namespace {
 
 using test::place;
+using test::end_time_value;
 using test::swarm_parked_at;
 constexpr double kPi = std::numbers::pi;
 
@@ -31,16 +32,6 @@ SwarmState isolated_robots() {
   SwarmState s = swarm_parked_at(20, {});
   for (int i = 0; i < 20; ++i) s.position[static_cast<std::size_t>(i)] = Vec2::polar(1.15, kPi / 10 * i);
   return s;
-}
-
-double final_value(const Mission& m, SwarmState& s, std::uint64_t seed = 1) {
-  ObjectiveTracker objective(m);
-  objective.reset();
-  Rng rng(seed);
-  objective.post_step(s, 1, rng);
-  EXPECT_EQ(objective.value(), 0.0) << "scored before the last tick";
-  objective.post_step(s, m.ticks, rng);
-  return objective.value();
 }
 
 TEST(NetworkCoverage, LinksAreStrictlyShorterThanTheRangeAndTiesKeepTheFirstComponent) {
@@ -71,7 +62,7 @@ TEST(NetworkCoverage, OneRobotCoversADiscOfTheSensingRadius) {
   SwarmState s = isolated_robots();  // robot 0 (first of 20 singletons) is G
   s.position[0] = {0.5, 0.5};
   // pi 0.25^2 = 0.19635; 25 000 points in a 0.5 x 0.5 box: sd 0.25 sqrt(p (1 - p) / n) = 0.0007.
-  EXPECT_NEAR(final_value(m, s), kPi * 0.0625, 0.003);
+  EXPECT_NEAR(end_time_value(m, s), kPi * 0.0625, 0.003);
 }
 
 TEST(NetworkCoverage, TwoLinkedRobotsCoverTheUnionOfTheirDiscs) {
@@ -80,14 +71,14 @@ TEST(NetworkCoverage, TwoLinkedRobotsCoverTheUnionOfTheirDiscs) {
   s.position[0] = {0.0, 0.0};
   s.position[1] = {0.3, 0.0};  // linked (0.3 < 0.35)
   const double union_area = 2 * kPi * 0.0625 - lens_area(0.25, 0.25, 0.3);
-  EXPECT_NEAR(final_value(m, s), union_area, 0.004);
+  EXPECT_NEAR(end_time_value(m, s), union_area, 0.004);
 }
 
 TEST(NetworkCoverage, CoverageIsClippedToTheDiscOfDistributionRadius) {
   const Mission m = load_mission("lcn");
   SwarmState s = isolated_robots();
   s.position[0] = {1.15, 0.0};  // its disc reaches 0.2 m beyond the 1.2 m clip circle
-  EXPECT_NEAR(final_value(m, s), lens_area(0.25, 1.2, 1.15), 0.003);
+  EXPECT_NEAR(end_time_value(m, s), lens_area(0.25, 1.2, 1.15), 0.003);
 }
 
 TEST(NetworkCoverage, TheBoxQuirkStretchesTheSamplingBoxToTheOrigin) {
