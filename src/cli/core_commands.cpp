@@ -12,6 +12,7 @@
 
 #include "cli/command_registry.hpp"
 #include "cli/control_software_input.hpp"
+#include "cli/score_report.hpp"
 #include "control/describe.hpp"
 #include "evaluation/evaluator.hpp"
 #include "evaluation/simulation.hpp"
@@ -95,12 +96,6 @@ void register_mission_show(CLI::App& app) {
   });
 }
 
-double median_of(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 void register_evaluate(CLI::App& app, Context& context) {
   auto* cmd = app.add_subcommand("evaluate", "Simulate control software on a mission and print its score per seed");
   struct Options {
@@ -140,36 +135,9 @@ void register_evaluate(CLI::App& app, Context& context) {
       Simulation simulation(mission, software);
       scores[0] = simulation.run(seeds[0], &writer);
     } else {
-      ThreadedEvaluator evaluator(o->threads);
-      std::vector<EvaluationTask> tasks;
-      for (const auto s : seeds) tasks.push_back({&software, s});
-      const bool progress = seeds.size() > 1 && isatty(STDERR_FILENO) && !o->json;
-      // Batches keep a progress line alive without changing any score.
-      const std::size_t batch = progress ? static_cast<std::size_t>(std::max(1, evaluator.threads()) * 4) : tasks.size();
-      for (std::size_t start = 0; start < tasks.size(); start += batch) {
-        const std::size_t count = std::min(batch, tasks.size() - start);
-        evaluator.evaluate(mission, std::span(tasks).subspan(start, count), std::span(scores).subspan(start, count));
-        if (progress) std::fprintf(stderr, "\revaluated %zu/%zu seeds", start + count, tasks.size());
-      }
-      if (progress) std::fprintf(stderr, "\r\033[K");
+      scores = score_seeds(mission, software, seeds, o->threads, isatty(STDERR_FILENO) && !o->json);
     }
-
-    const double mean = std::accumulate(scores.begin(), scores.end(), 0.0) / static_cast<double>(scores.size());
-    const double median = median_of(scores);
-    if (o->json) {
-      json runs = json::array();
-      for (std::size_t i = 0; i < seeds.size(); ++i) runs.push_back({{"seed", seeds[i]}, {"score", scores[i]}});
-      json out{{"mission", mission.name}, {"direction", direction_name(mission.objective.direction)},
-               {"control_software", to_config_string(software)}, {"runs", runs}};
-      if (seeds.size() > 1) {
-        out["mean"] = mean;
-        out["median"] = median;
-      }
-      std::cout << out.dump(2) << "\n";
-      return;
-    }
-    for (std::size_t i = 0; i < seeds.size(); ++i) std::cout << "Score " << format_number(scores[i]) << "\n";
-    if (seeds.size() > 1) std::cout << "Mean " << format_number(mean) << "\nMedian " << format_number(median) << "\n";
+    print_scores(mission, software, seeds, scores, o->json);
   });
 }
 

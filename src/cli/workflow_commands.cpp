@@ -1,5 +1,5 @@
-// The active project's design settings: set-budget and set-mission. run-design, status and
-// test-design join them once the optimiser and the evaluator are in.
+// The active project's design settings: set-budget and set-mission. Running and watching a
+// design: run_design_commands.cpp (run-design, test-design) and status_commands.cpp.
 #include <CLI/CLI.hpp>
 #include <unistd.h>
 

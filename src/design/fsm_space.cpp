@@ -1,17 +1,72 @@
 #include "design/fsm_space.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <stdexcept>
 
 namespace sd::design {
 
 namespace {
 
-ModuleParam real(std::string name, std::string token, double lo, double hi) {
-  return {std::move(name), std::move(token), ParamType::Real, lo, hi, {}};
+std::string number_text(double v) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
+  return std::string(buffer, result.ptr);
 }
-ModuleParam integer(std::string name, std::string token, double lo, double hi) {
-  return {std::move(name), std::move(token), ParamType::Integer, lo, hi, {}};
+
+// irace parameter names follow the AutoMoDe grammars: the upper-cased token, except where one
+// token carries two meanings. Chocolate's neighbour-count conditions send their integer
+// threshold ξ in --p<i>x<j>, which the probability of the floor conditions also uses; the
+// grammars call ξ "B".
+std::string upper(std::string text) {
+  for (char& ch : text) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+  return text;
+}
+
+// A parameter that exists only for some values of another (Coconut's RWM with EXP 1) gets its
+// own irace name, e.g. RWMEXP1: the same switch as Chocolate's RWM but another condition,
+// as the AutoMoDe grammars do for B and P.
+std::string irace_name(const ParameterSpec& spec) {
+  if (spec.token == "p" && spec.type == ParameterType::Integer) return "B";
+  std::string name = upper(spec.token);
+  if (!spec.active_if.empty()) {
+    name += upper(spec.active_if);
+    for (double v : spec.active_values) name += number_text(v);
+  }
+  return name;
+}
+
+ModuleParam from_catalogue(const ParameterSpec& spec) {
+  ModuleParam mp;
+  mp.name = irace_name(spec);
+  if (!spec.active_if.empty()) {
+    mp.active_if = upper(spec.active_if);
+    for (double v : spec.active_values) mp.active_values.push_back(number_text(v));
+  }
+  mp.token = spec.token;
+  mp.lower = spec.min;
+  mp.upper = spec.max;
+  switch (spec.type) {
+    case ParameterType::Integer: mp.type = ParamType::Integer; break;
+    case ParameterType::Real: mp.type = ParamType::Real; break;
+    case ParameterType::Categorical:
+      mp.type = ParamType::Categorical;
+      for (double v : spec.values) mp.values.push_back(number_text(v));
+      break;
+  }
+  return mp;
+}
+
+std::vector<Module> catalogue_modules(ModuleKind kind, std::span<const Flavour> flavours) {
+  std::vector<Module> out;
+  for (const ModuleSpec& spec : modules(kind)) {
+    if (std::find(flavours.begin(), flavours.end(), spec.flavour()) == flavours.end()) continue;
+    Module m{spec.id, {}};
+    for (const ParameterSpec& p : spec.parameters) m.params.push_back(from_catalogue(p));
+    out.push_back(std::move(m));
+  }
+  return out;
 }
 
 // A module parameter shared by several modules, in order of first appearance.
@@ -21,7 +76,8 @@ struct ParamGroup {
 };
 
 bool same_definition(const ModuleParam& a, const ModuleParam& b) {
-  return a.token == b.token && a.type == b.type && a.lower == b.lower && a.upper == b.upper && a.values == b.values;
+  return a.token == b.token && a.type == b.type && a.lower == b.lower && a.upper == b.upper && a.values == b.values &&
+         a.active_if == b.active_if && a.active_values == b.active_values;
 }
 
 std::vector<ParamGroup> group_params(const std::vector<Module>& modules) {
@@ -54,7 +110,7 @@ std::vector<std::string> ids_of(const std::vector<Module>& modules) {
 }
 
 Parameter from_module_param(const ModuleParam& mp, const std::string& suffix, const std::string& selector,
-                            const std::vector<std::string>& ids) {
+                            const std::vector<std::string>& ids, const Condition& extra) {
   Parameter p;
   p.name = mp.name + suffix;
   p.switch_ = "--" + mp.token + suffix + " ";
@@ -62,7 +118,9 @@ Parameter from_module_param(const ModuleParam& mp, const std::string& suffix, co
   p.values = mp.values;
   p.lower = Bound::fixed(mp.lower);
   p.upper = Bound::fixed(mp.upper);
-  p.condition = {Clause{selector, Clause::Op::In, ids, 0.0}};
+  p.condition = extra;
+  p.condition.push_back(Clause{selector, Clause::Op::In, ids, 0.0});
+  if (!mp.active_if.empty()) p.condition.push_back(Clause{mp.active_if + suffix, Clause::Op::In, mp.active_values, 0.0});
   return p;
 }
 
@@ -70,40 +128,38 @@ Clause greater(const std::string& param, double v) { return Clause{param, Clause
 
 }  // namespace
 
+void add_module_parameters(ParameterSpace& space, const std::vector<Module>& modules, const std::string& suffix,
+                           const std::string& selector, const Condition& extra) {
+  for (const auto& g : group_params(modules)) space.add(from_module_param(g.param, suffix, selector, g.module_ids, extra));
+}
+
+FsmModules catalogue_fsm_modules(std::span<const Flavour> flavours) {
+  return {catalogue_modules(ModuleKind::Behaviour, flavours), catalogue_modules(ModuleKind::Condition, flavours)};
+}
+
 FsmModules chocolate_fsm_modules() {
-  FsmModules m;
-  m.behaviours = {
-      {10, {integer("RWM", "rwm", 1, 100)}},  // exploration: random-walk steps
-      {11, {}},                               // stop
-      {12, {}},                               // phototaxis
-      {13, {}},                               // anti-phototaxis
-      {14, {real("ATT", "att", 1, 5)}},       // attraction
-      {15, {real("REP", "rep", 1, 5)}},       // repulsion
-  };
-  const ModuleParam p = real("P", "p", 0, 1);
-  // Neighbour-count conditions: ξ travels in --p<i>x<j>, η in --w<i>x<j> (AM master encoding).
-  const std::vector<ModuleParam> neighbours = {integer("B", "p", 1, 10), real("W", "w", 0, 20)};
-  m.conditions = {
-      {10, {p}}, {11, {p}}, {12, {p}}, {13, neighbours}, {14, neighbours}, {15, {p}},
-  };
-  return m;
+  const Flavour chocolate[] = {Flavour::Chocolate};
+  return catalogue_fsm_modules(chocolate);
 }
 
 ParameterSpace build_fsm_space(const FsmModules& modules, const FsmSpaceOptions& o) {
+  if (o.architectures.empty()) throw std::invalid_argument("no architecture value given");
+  ParameterSpace space(o.digits);
+  // ARCH "--" c ("fsm-config", ...): first token of the string (§8.5).
+  space.add(Parameter{"ARCH", "--", ParamType::Categorical, o.architectures, {}, {}, false, {}});
+  add_fsm_parameters(space, modules, o);
+  space.finalize();
+  return space;
+}
+
+void add_fsm_parameters(ParameterSpace& space, const FsmModules& modules, const FsmSpaceOptions& o) {
   if (modules.behaviours.empty() || modules.conditions.empty())
     throw std::invalid_argument("an FSM space needs at least one behaviour and one condition");
   if (o.max_states < 2 || o.max_transitions < 1)
     throw std::invalid_argument("an FSM space needs max_states >= 2 and max_transitions >= 1");
-  if (o.architectures.empty()) throw std::invalid_argument("no architecture value given");
 
   const auto behaviour_ids = ids_of(modules.behaviours);
   const auto condition_ids = ids_of(modules.conditions);
-  const auto behaviour_params = group_params(modules.behaviours);
-  const auto condition_params = group_params(modules.conditions);
-
-  ParameterSpace space(o.digits);
-  // ARCH "--" c ("fsm-config", ...): first token of the string (§8.5).
-  space.add(Parameter{"ARCH", "--", ParamType::Categorical, o.architectures, {}, {}, false, {}});
 
   Parameter nstates{"NumStates", "--nstates ", ParamType::Integer, {}, Bound::fixed(1),
                     Bound::fixed(o.max_states), false, {}};
@@ -115,7 +171,7 @@ ParameterSpace build_fsm_space(const FsmModules& modules, const FsmSpaceOptions&
     const std::string state = "S" + si;
     space.add(Parameter{state, "--s" + si + " ", ParamType::Categorical, behaviour_ids, {}, {}, false,
                         {greater("NumStates", i)}});
-    for (const auto& g : behaviour_params) space.add(from_module_param(g.param, si, state, g.module_ids));
+    add_module_parameters(space, modules.behaviours, si, state);
 
     const std::string nconn = "NumConnections" + si;
     space.add(Parameter{nconn, "--n" + si + " ", ParamType::Integer, {}, Bound::fixed(1),
@@ -128,11 +184,9 @@ ParameterSpace build_fsm_space(const FsmModules& modules, const FsmSpaceOptions&
       const std::string cond = "C" + ij;
       space.add(Parameter{cond, "--c" + ij + " ", ParamType::Categorical, condition_ids, {}, {}, false,
                           {greater(nconn, j)}});
-      for (const auto& g : condition_params) space.add(from_module_param(g.param, ij, cond, g.module_ids));
+      add_module_parameters(space, modules.conditions, ij, cond);
     }
   }
-  space.finalize();
-  return space;
 }
 
 }  // namespace sd::design

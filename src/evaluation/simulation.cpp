@@ -9,7 +9,7 @@ Simulation::Simulation(const Mission& mission, const ControlSoftware& software)
     : mission_(&mission),
       software_(software),
       controller_(software_, mission.robots),
-      objective_(mission.objective) {
+      objective_(mission) {
   swarm_.resize(mission.robots, static_cast<int>(mission.arena.leds.size()));
   physics_.reset(mission.robots);
   reference_.resize(static_cast<std::size_t>(mission.robots));
@@ -24,7 +24,7 @@ Simulation::Simulation(const Mission& mission, const ControlSoftware& software)
 void Simulation::reset(std::uint64_t seed) {
   rng_.reseed(seed);
   tick_ = 0;
-  place_robots(mission_->arena, mission_->start, swarm_, rng_);
+  place_robots(mission_->arena, [this](Rng& rng) { return mission_->draw_start(rng); }, swarm_, rng_);
   for (std::size_t k = 0; k < mission_->arena.leds.size(); ++k) swarm_.arena_led_color[k] = mission_->arena.leds[k].initial_color;
   physics_.reset(mission_->robots);
   for (auto& rm : reference_) rm.reset();

@@ -3,10 +3,23 @@
 // Missions are data (JSON files in missions/ or anywhere a user puts them); loading one
 // validates every field and compiles the arena once, so evaluations only read it.
 #include <filesystem>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <variant>
 #include <vector>
 
+#include "missions/arrest_rule.hpp"
+#include "missions/led_arena.hpp"
+#include "missions/mission_events.hpp"
+#include "missions/objective_best_region.hpp"
+#include "missions/objective_foraging.hpp"
+#include "missions/objective_grid_exploration.hpp"
+#include "missions/objective_mean_distance.hpp"
+#include "missions/objective_network_coverage.hpp"
+#include "missions/objective_region_count.hpp"
+#include "missions/objective_stop_then_move.hpp"
+#include "missions/start_distribution.hpp"
 #include "simulator/arena.hpp"
 #include "simulator/region.hpp"
 #include "simulator/robot_model.hpp"
@@ -16,18 +29,17 @@ namespace sd {
 enum class Direction { Maximize, Minimize };
 std::string_view direction_name(Direction d);
 
-/// Objective types, each a reusable building block with its own parameters.
-namespace objectives {
-/// Sum over ticks of the number of robots whose centre is in the region (AAC).
-struct RobotsInRegionPerTick {
-  Region region;
-};
-}  // namespace objectives
+/// The objective types, each a reusable building block (objective_<idea>.hpp) whose
+/// parameters name their per-run score type. The file names them by `type`
+/// (mission_file.cpp holds the table).
+using ObjectiveParameters = std::variant<RegionCountObjective, BestRegionObjective, ForagingObjective,
+                                         GridExplorationObjective, MeanDistanceObjective, NetworkCoverageObjective,
+                                         StopThenMoveObjective>;
 
 struct ObjectiveSpec {
   std::string type;
   Direction direction = Direction::Maximize;
-  std::variant<objectives::RobotsInRegionPerTick> parameters;
+  ObjectiveParameters parameters;
 };
 
 struct Mission {
@@ -39,10 +51,17 @@ struct Mission {
   double duration_s = 120.0;
   int ticks = 1200;
   int robots = 20;
-  Region start;
+  Region start;                         // where robots start (for start_arc: the square it fills)
+  std::optional<JitteredArc> start_arc;  // TuttiFrutti's own start draw
   ArenaModel arena;
+  LedArena led_arena;                   // which arena LEDs make which block (TuttiFrutti)
   RobotModel robot;
+  std::optional<ArrestRule> arrest;     // Coconut unbounded workspace
+  std::vector<MissionEvent> events;     // TuttiFrutti LED colours
   ObjectiveSpec objective;
+
+  /// One start position, as placement draws it (before rejecting overlaps).
+  Vec2 draw_start(Rng& rng) const;
 };
 
 /// Invalid mission file: the message names the field ("arena.floor.patches[1].radius: ...").

@@ -2,12 +2,16 @@
 // is reported with the path of the field and nothing runs.
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <set>
+#include <functional>
+#include <optional>
 #include <sstream>
 
+#include "missions/json_field.hpp"
 #include "missions/mission.hpp"
+#include "missions/read_shapes.hpp"
 #include "simulator/epuck.hpp"
 
 namespace sd {
@@ -15,144 +19,6 @@ namespace sd {
 namespace {
 
 using nlohmann::json;
-
-/// A JSON value together with its path in the file, for error messages.
-class Field {
- public:
-  Field(const json& value, std::string path) : value_(value), path_(std::move(path)) {}
-
-  [[noreturn]] void fail(const std::string& what) const { throw MissionError(path_ + ": " + what); }
-
-  const std::string& path() const { return path_; }
-  const json& raw() const { return value_; }
-
-  Field at(const std::string& key) const {
-    expect_object();
-    if (!value_.contains(key)) throw MissionError(child_path(key) + ": missing field");
-    return Field(value_.at(key), child_path(key));
-  }
-  bool has(const std::string& key) const { return value_.is_object() && value_.contains(key); }
-  Field at(std::size_t index) const { return Field(value_.at(index), path_ + "[" + std::to_string(index) + "]"); }
-  std::size_t size() const { return value_.size(); }
-
-  /// Rejects keys this reader does not know: a misspelt field must not be ignored.
-  void only(std::initializer_list<const char*> keys) const {
-    expect_object();
-    const std::set<std::string> allowed(keys.begin(), keys.end());
-    for (const auto& [key, v] : value_.items())
-      if (!allowed.count(key)) throw MissionError(child_path(key) + ": unknown field");
-  }
-
-  void expect_object() const {
-    if (!value_.is_object()) fail("expected an object");
-  }
-  const json& array() const {
-    if (!value_.is_array()) fail("expected a list");
-    return value_;
-  }
-  double number() const {
-    if (!value_.is_number()) fail("expected a number");
-    const double v = value_.get<double>();
-    if (!std::isfinite(v)) fail("expected a finite number");
-    return v;
-  }
-  double positive() const {
-    const double v = number();
-    if (v <= 0.0) fail("must be positive");
-    return v;
-  }
-  double non_negative() const {
-    const double v = number();
-    if (v < 0.0) fail("must not be negative");
-    return v;
-  }
-  double probability() const {
-    const double v = number();
-    if (v < 0.0 || v > 1.0) fail("must be in [0, 1]");
-    return v;
-  }
-  int integer() const {
-    if (!value_.is_number_integer()) fail("expected an integer");
-    return value_.get<int>();
-  }
-  bool boolean() const {
-    if (!value_.is_boolean()) fail("expected true or false");
-    return value_.get<bool>();
-  }
-  std::string text() const {
-    if (!value_.is_string()) fail("expected a string");
-    return value_.get<std::string>();
-  }
-  Vec2 vec2() const {
-    if (!value_.is_array() || value_.size() != 2) fail("expected [x, y]");
-    return {at(0).number(), at(1).number()};
-  }
-  Vec3 vec3() const {
-    if (!value_.is_array() || value_.size() != 3) fail("expected [x, y, z]");
-    return {at(0).number(), at(1).number(), at(2).number()};
-  }
-
- private:
-  std::string child_path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
-  const json& value_;
-  std::string path_;
-};
-
-struct NamedColor {
-  const char* name;
-  std::uint32_t rgb;
-};
-// ARGoS' named colours; gray is GRAY50.
-constexpr NamedColor kColors[] = {{"black", 0x000000}, {"white", 0xffffff}, {"gray", 0x7f7f7f},
-                                  {"red", 0xff0000},   {"green", 0x00ff00}, {"blue", 0x0000ff},
-                                  {"yellow", 0xffff00}, {"magenta", 0xff00ff}, {"cyan", 0x00ffff}};
-
-std::uint32_t read_color(const Field& f) {
-  const std::string name = f.text();
-  for (const auto& c : kColors)
-    if (name == c.name) return c.rgb;
-  if (name.size() == 7 && name[0] == '#') {
-    try {
-      return static_cast<std::uint32_t>(std::stoul(name.substr(1), nullptr, 16));
-    } catch (...) {
-    }
-  }
-  f.fail("unknown colour '" + name + "' (black, white, gray, red, green, blue, yellow, magenta, cyan or #rrggbb)");
-}
-
-double gray_of(std::uint32_t rgb) {
-  // Ground sensor: 0.299 R + 0.587 G + 0.114 B, over 255 (ARGoS ToGrayScale).
-  const double r = (rgb >> 16) & 0xff, g = (rgb >> 8) & 0xff, b = rgb & 0xff;
-  return (0.299 * r + 0.587 * g + 0.114 * b) / 255.0;
-}
-
-Region read_region(const Field& f) {
-  f.expect_object();
-  if (f.raw().size() != 1) f.fail("expected exactly one of circle, rectangle, polygon");
-  if (f.has("circle")) {
-    const Field c = f.at("circle");
-    c.only({"center", "radius", "inclusive"});
-    const bool inclusive = c.has("inclusive") ? c.at("inclusive").boolean() : true;
-    return Region::circle(c.at("center").vec2(), c.at("radius").positive(), inclusive);
-  }
-  if (f.has("rectangle")) {
-    const Field r = f.at("rectangle");
-    r.only({"center", "size", "yaw"});
-    const Vec2 size = r.at("size").vec2();
-    if (size.x <= 0 || size.y <= 0) r.at("size").fail("sizes must be positive");
-    return Region::rectangle(r.at("center").vec2(), size, r.has("yaw") ? degrees_to_radians(r.at("yaw").number()) : 0.0);
-  }
-  if (f.has("polygon")) {
-    const Field p = f.at("polygon");
-    std::vector<Vec2> vertices;
-    for (std::size_t i = 0; i < p.array().size(); ++i) vertices.push_back(p.at(i).vec2());
-    if (vertices.size() < 3) p.fail("a polygon needs at least 3 vertices");
-    Region region = Region::polygon(std::move(vertices));
-    if (region.area() <= 0.0) p.fail("the polygon has no area");
-    return region;
-  }
-  f.fail("expected one of circle, rectangle, polygon");
-}
 
 Wall make_wall(Vec2 center, Vec2 axis, double length, double thickness, double height) {
   Wall w;
@@ -164,45 +30,60 @@ Wall make_wall(Vec2 center, Vec2 axis, double length, double thickness, double h
   return w;
 }
 
-void read_walls(const Field& f, ArenaModel& arena) {
+void read_walls(const Field& f, Mission& m) {
+  ArenaModel& arena = m.arena;
   for (std::size_t i = 0; i < f.array().size(); ++i) {
     const Field item = f.at(i);
-    item.expect_object();
-    if (item.has("box")) {
+    item.only({"box", "regular_polygon", "led_polygon"});
+    if (item.raw().size() != 1) item.fail("expected exactly one of box, regular_polygon, led_polygon");
+    if (item.has("led_polygon")) {
+      // Events address LED blocks by side and block number: one LED arena per mission.
+      if (!m.led_arena.empty()) item.at("led_polygon").fail("a mission has at most one led_polygon");
+      m.led_arena = read_led_polygon(item.at("led_polygon"), arena);
+    } else if (item.has("box")) {
       // ARGoS <box size="sx,sy,sz"> with a yaw: local x and y extents rotated by the yaw.
       const Field b = item.at("box");
       b.only({"center", "size", "yaw", "height"});
       const Vec2 size = b.at("size").vec2();
       if (size.x <= 0 || size.y <= 0) b.at("size").fail("sizes must be positive");
-      const double yaw = b.has("yaw") ? degrees_to_radians(b.at("yaw").number()) : 0.0;
-      const double height = b.has("height") ? b.at("height").positive() : 0.08;
+      const double yaw = degrees_to_radians(b.number_or("yaw", 0.0));
+      const double height = b.positive_or("height", 0.08);
       const Vec2 local_x = Vec2::polar(1.0, yaw), local_y = Vec2::polar(1.0, yaw + kPi / 2);
       arena.walls.push_back(size.y >= size.x ? make_wall(b.at("center").vec2(), local_y, size.y, size.x, height)
                                              : make_wall(b.at("center").vec2(), local_x, size.x, size.y, height));
     } else if (item.has("regular_polygon")) {
       // The AutoMoDe dodecagon and its kin: one box per side, tangent to the inscribed circle.
+      // Side k (0-based) is centred at polar angle first_angle + 360 k / sides; `omit` leaves
+      // sides out (the Coconut unbounded workspace opens the dodecagon's three top sides).
       const Field p = item.at("regular_polygon");
-      p.only({"sides", "apothem", "length", "thickness", "height", "first_angle"});
-      const int sides = p.at("sides").integer();
-      if (sides < 3 || sides > 64) p.at("sides").fail("must be between 3 and 64");
+      p.only({"sides", "apothem", "length", "thickness", "height", "first_angle", "omit"});
+      const int sides = p.at("sides").integer_in(3, 64);
       const double apothem = p.at("apothem").positive();
-      const double length = p.has("length") ? p.at("length").positive() : 2.0 * apothem * std::tan(kPi / sides);
-      const double thickness = p.has("thickness") ? p.at("thickness").positive() : 0.01;
-      const double height = p.has("height") ? p.at("height").positive() : 0.08;
-      const double first = p.has("first_angle") ? degrees_to_radians(p.at("first_angle").number()) : 0.0;
+      const double length = p.positive_or("length", 2.0 * apothem * std::tan(kPi / sides));
+      const double thickness = p.positive_or("thickness", 0.01);
+      const double height = p.positive_or("height", 0.08);
+      const double first = degrees_to_radians(p.number_or("first_angle", 0.0));
+      std::vector<bool> omitted(static_cast<std::size_t>(sides), false);
+      if (p.has("omit")) {
+        const Field omit = p.at("omit");
+        for (std::size_t j = 0; j < omit.items(); ++j) {
+          const int k = omit.at(j).integer_in(0, sides - 1);
+          if (omitted[static_cast<std::size_t>(k)]) omit.at(j).fail("side " + std::to_string(k) + " is omitted twice");
+          omitted[static_cast<std::size_t>(k)] = true;
+        }
+      }
       for (int k = 0; k < sides; ++k) {
+        if (omitted[static_cast<std::size_t>(k)]) continue;
         const double phi = first + kTwoPi * k / sides;
         arena.walls.push_back(make_wall(Vec2::polar(apothem, phi), Vec2::polar(1.0, phi + kPi / 2), length, thickness, height));
       }
-    } else {
-      item.fail("expected {\"box\": ...} or {\"regular_polygon\": ...}");
     }
   }
 }
 
 void read_arena(const Field& f, Mission& m) {
   f.only({"walls", "floor", "lights"});
-  if (f.has("walls")) read_walls(f.at("walls"), m.arena);
+  if (f.has("walls")) read_walls(f.at("walls"), m);
   if (f.has("floor")) {
     const Field floor = f.at("floor");
     floor.only({"background", "patches"});
@@ -248,6 +129,21 @@ void read_robot_model(const Field& f, RobotModel& r) {
   if (f.has("camera_range")) r.camera_range = f.at("camera_range").positive();
 }
 
+/// The objective types a mission file may name, with their readers.
+struct ObjectiveType {
+  const char* name;
+  std::function<ObjectiveParameters(const Field&)> read;
+};
+const ObjectiveType kObjectiveTypes[] = {
+    {"robots_in_region_per_tick", read_region_count},
+    {"best_region_fraction_at_end", read_best_region},
+    {"foraging", read_foraging},
+    {"grid_exploration", read_grid_exploration},
+    {"mean_distance_to_robots", read_mean_distance},
+    {"largest_network_coverage", read_network_coverage},
+    {"stop_then_move", read_stop_then_move},
+};
+
 ObjectiveSpec read_objective(const Field& f) {
   ObjectiveSpec spec;
   spec.type = f.at("type").text();
@@ -255,13 +151,79 @@ ObjectiveSpec read_objective(const Field& f) {
   if (direction == "maximize") spec.direction = Direction::Maximize;
   else if (direction == "minimize") spec.direction = Direction::Minimize;
   else f.at("direction").fail("must be \"maximize\" or \"minimize\"");
-  if (spec.type == "robots_in_region_per_tick") {
-    f.only({"type", "direction", "region"});
-    spec.parameters = objectives::RobotsInRegionPerTick{read_region(f.at("region"))};
-  } else {
-    f.at("type").fail("unknown objective type '" + spec.type + "' (known: robots_in_region_per_tick)");
+  std::string known;
+  for (const ObjectiveType& type : kObjectiveTypes) {
+    if (spec.type == type.name) {
+      spec.parameters = type.read(f);
+      return spec;
+    }
+    known += (known.empty() ? "" : ", ") + std::string(type.name);
   }
-  return spec;
+  f.at("type").fail("unknown objective type '" + spec.type + "' (known: " + known + ")");
+}
+
+void read_events(const Field& f, Mission& m) {
+  for (std::size_t i = 0; i < f.items(); ++i) {
+    MissionEvent event = read_mission_event(f.at(i), m.led_arena, m.ticks);
+    for (const MissionEvent& other : m.events)
+      if (other.name == event.name) f.at(i).at("name").fail("another event is named '" + event.name + "'");
+    m.events.push_back(std::move(event));
+  }
+}
+
+/// Objectives that refer to a mission event name it; find its index once, here.
+void resolve_event_names(const Field& f, Mission& m) {
+  auto* stop = std::get_if<StopThenMoveObjective>(&m.objective.parameters);
+  if (!stop) return;
+  for (std::size_t e = 0; e < m.events.size(); ++e)
+    if (m.events[e].name == stop->switch_event) {
+      stop->event = e;
+      return;
+    }
+  f.at("switch_event").fail("no event is named '" + stop->switch_event + "'");
+}
+
+/// The box that holds every wall, if there are walls.
+std::optional<std::pair<Vec2, Vec2>> walls_bounds(const ArenaModel& arena) {
+  if (arena.walls.empty()) return std::nullopt;
+  constexpr double kHuge = 1e300;
+  Vec2 lo{kHuge, kHuge}, hi{-kHuge, -kHuge};
+  for (const Wall& w : arena.walls) {
+    // Corners of the wall's rectangle.
+    for (const double a : {-1.0, 1.0})
+      for (const double b : {-1.0, 1.0}) {
+        const Vec2 c = w.center + w.axis * (a * w.half_length) + w.normal() * (b * w.half_thickness);
+        lo = {std::min(lo.x, c.x), std::min(lo.y, c.y)};
+        hi = {std::max(hi.x, c.x), std::max(hi.y, c.y)};
+      }
+  }
+  return std::make_pair(lo, hi);
+}
+
+std::string bounds_text(const std::pair<Vec2, Vec2>& b) {
+  std::ostringstream out;
+  out << "x in [" << b.first.x << ", " << b.second.x << "], y in [" << b.first.y << ", " << b.second.y << "]";
+  return out.str();
+}
+
+/// A floor patch nobody can drive on is a mistake in the file (a sign or a unit wrong).
+void check_patches_touch_arena(const Field& root, const Mission& m) {
+  const auto walls = walls_bounds(m.arena);
+  if (!walls) return;
+  for (std::size_t i = 0; i < m.arena.floor_patches.size(); ++i) {
+    const auto [lo, hi] = m.arena.floor_patches[i].region.bounds();
+    if (hi.x < walls->first.x || lo.x > walls->second.x || hi.y < walls->first.y || lo.y > walls->second.y)
+      root.at("arena").at("floor").at("patches").at(i).fail("lies outside the arena (the walls span " + bounds_text(*walls) + ")");
+  }
+}
+
+/// Robots must start within the walls; placement only keeps them off the walls themselves.
+void check_start_inside_walls(const Field& root, const Mission& m) {
+  const auto walls = walls_bounds(m.arena);
+  if (!walls) return;
+  const auto [lo, hi] = m.start.bounds();
+  if (lo.x < walls->first.x || hi.x > walls->second.x || lo.y < walls->first.y || hi.y > walls->second.y)
+    root.at("start").fail("reaches outside the walls (they span " + bounds_text(*walls) + ")");
 }
 
 /// A robot's centre needs this much free space: fail early instead of after 1000 trials.
@@ -284,7 +246,7 @@ Mission parse_mission(const std::string& json_text, const std::string& source) {
     throw MissionError(std::string("not valid JSON: ") + e.what());
   }
   const Field root(document, "");
-  root.only({"name", "title", "origin", "description", "duration", "robots", "arena", "start", "robot", "objective"});
+  root.only({"name", "title", "origin", "description", "duration", "robots", "arena", "start", "robot", "arrest", "events", "objective"});
   Mission m;
   m.source = source;
   m.name = root.at("name").text();
@@ -299,9 +261,19 @@ Mission parse_mission(const std::string& json_text, const std::string& source) {
   m.robots = root.at("robots").integer();
   if (m.robots < 1 || m.robots > 1000) root.at("robots").fail("must be between 1 and 1000");
   read_arena(root.at("arena"), m);
-  m.start = read_region(root.at("start"));
+  if (const auto arc = read_jittered_arc(root.at("start"))) {
+    m.start_arc = arc;
+    m.start = arc->support();
+  } else {
+    m.start = read_region(root.at("start"));
+  }
   if (root.has("robot")) read_robot_model(root.at("robot"), m.robot);
+  if (root.has("arrest")) m.arrest = read_arrest_rule(root.at("arrest"));
+  if (root.has("events")) read_events(root.at("events"), m);
   m.objective = read_objective(root.at("objective"));
+  resolve_event_names(root.at("objective"), m);
+  check_patches_touch_arena(root, m);
+  check_start_inside_walls(root, m);
   check_swarm_fits(root, m);
   m.arena.compile();
   return m;

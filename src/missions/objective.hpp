@@ -1,6 +1,11 @@
 #pragma once
-// Scoring a run: an objective is updated after every tick (ARGoS loop-function PostStep)
-// and read at the end. Any sampling it needs draws from the run's generator.
+// Scoring a run, and the mission's own rules, as ARGoS' loop-function PostStep: after every
+// tick (after that tick's physics and control) the mission first applies its rules (the
+// Coconut arrest rule may move robots), then its events (TuttiFrutti LED colours, whose
+// random choices are drawn at tick 1), then updates its objective. Any sampling draws from
+// the run's generator. One tracker serves many runs of one mission: reset() between runs.
+#include <variant>
+
 #include "core/rng.hpp"
 #include "missions/mission.hpp"
 #include "simulator/swarm.hpp"
@@ -9,17 +14,28 @@ namespace sd {
 
 class ObjectiveTracker {
  public:
-  explicit ObjectiveTracker(const ObjectiveSpec& spec) : spec_(&spec) {}
+  /// Sizes every buffer for the mission's swarm and duration; `mission` must outlive it.
+  explicit ObjectiveTracker(const Mission& mission);
 
-  void reset() { value_ = 0.0; }
-  /// Called after the control step of tick `tick` (1-based).
-  void post_step(const SwarmState& swarm, int tick, Rng& rng);
+  void reset();
+  /// Called after the control step of tick `tick` (1-based, up to mission.ticks).
+  void post_step(SwarmState& swarm, int tick, Rng& rng);
   /// The mission's natural value (its direction says whether more is better).
-  double value() const { return value_; }
+  double value() const;
 
  private:
-  const ObjectiveSpec* spec_;
-  double value_ = 0.0;
+  template <class Parameters>
+  struct ScoresOf;
+  template <class... P>
+  struct ScoresOf<std::variant<P...>> {
+    using type = std::variant<typename P::Score...>;
+  };
+  using Score = ScoresOf<ObjectiveParameters>::type;
+  static Score make_score(const Mission& mission, const EventTimeline& events);
+
+  const Mission* mission_;
+  EventTimeline events_;
+  Score score_;  // after events_: a score may read the event ticks
 };
 
 }  // namespace sd

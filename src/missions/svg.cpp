@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace sd {
 
@@ -34,6 +36,44 @@ std::string region_element(const Region& r, const std::string& style) {
   return out.str();
 }
 
+/// The colour each wall shows once the mission's fixed events have run (LED blocks take their
+/// LEDs' colour; 0 = none). Random choices cannot be drawn: describe_random_events says them.
+std::vector<std::uint32_t> wall_colors(const Mission& m) {
+  std::vector<std::uint32_t> color(m.arena.walls.size());
+  for (std::size_t w = 0; w < color.size(); ++w) color[w] = m.arena.walls[w].led_color;
+  for (const ArenaLed& led : m.arena.leds)
+    if (led.initial_color) color[led.wall] = led.initial_color;
+  for (const MissionEvent& e : m.events) {
+    if (e.first_tick != e.last_tick) continue;
+    for (const MissionEvent::LedChange& c : e.leds) {
+      if (c.side == MissionEvent::kRandom || c.block == MissionEvent::kRandom) continue;
+      for (const LedArena::Block& b : m.led_arena.blocks)
+        if ((c.side == MissionEvent::kEvery || c.side == b.side) && (c.block == MissionEvent::kEvery || c.block == b.block))
+          color[b.wall] = c.color;
+    }
+  }
+  return color;
+}
+
+std::vector<std::string> describe_random_events(const Mission& m) {
+  auto selector = [](const char* what, int s) {
+    return s == MissionEvent::kRandom ? std::string("a random ") + what
+                                      : s == MissionEvent::kEvery ? std::string("every ") + what : std::string(what) + " " + std::to_string(s);
+  };
+  std::vector<std::string> lines;
+  for (const MissionEvent& e : m.events) {
+    bool random = e.first_tick != e.last_tick;
+    for (const MissionEvent::LedChange& c : e.leds) random = random || c.side == MissionEvent::kRandom || c.block == MissionEvent::kRandom;
+    if (!random) continue;
+    std::string line = "Event '" + e.name + "' at tick " + std::to_string(e.first_tick);
+    if (e.last_tick != e.first_tick) line += " to " + std::to_string(e.last_tick) + " (random)";
+    for (const MissionEvent::LedChange& c : e.leds)
+      line += ": " + selector("block", c.block) + " of " + selector("side", c.side) + " turns " + rgb_text(c.color);
+    lines.push_back(line);
+  }
+  return lines;
+}
+
 }  // namespace
 
 std::string mission_svg(const Mission& m) {
@@ -49,12 +89,15 @@ std::string mission_svg(const Mission& m) {
   }
   for (const FloorPatch& p : m.arena.floor_patches) grow(p.region.bounds().first, p.region.bounds().second);
   grow(m.start.bounds().first, m.start.bounds().second);
+  if (m.arrest) grow(m.arrest->jail.bounds().first, m.arrest->jail.bounds().second);
   for (const Light& l : m.arena.lights) grow(l.position.xy(), l.position.xy());
   lo = lo - Vec2{0.15, 0.15};
   hi = hi + Vec2{0.15, 0.15};
 
+  const std::vector<std::string> captions = describe_random_events(m);
+  constexpr double kLine = 0.08;  // caption line height, m
   std::ostringstream out;
-  const double width = hi.x - lo.x, height = hi.y - lo.y;
+  const double width = hi.x - lo.x, height = hi.y - lo.y + kLine * static_cast<double>(captions.size());
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << static_cast<int>(width * 250) << "\" height=\""
       << static_cast<int>(height * 250) << "\" viewBox=\"" << lo.x << " " << -hi.y << " " << width << " " << height
       << "\">\n";
@@ -65,22 +108,34 @@ std::string mission_svg(const Mission& m) {
       << "\" fill=\"" << rgb_text(m.arena.floor_background_rgb) << "\"/>\n";
   // Patches are drawn last-first so that the first matching patch ends on top, as it wins.
   for (auto it = m.arena.floor_patches.rbegin(); it != m.arena.floor_patches.rend(); ++it)
-    out << region_element(it->region, "fill=\"" + rgb_text(it->rgb) + "\"") << "\n";
-  out << region_element(m.start, "fill=\"none\" stroke=\"#1f77b4\" stroke-width=\"0.012\" stroke-dasharray=\"0.04 0.03\"")
+    out << region_element(it->region, "class=\"patch\" fill=\"" + rgb_text(it->rgb) + "\"") << "\n";
+  out << region_element(m.start, "class=\"start\" fill=\"none\" stroke=\"#1f77b4\" stroke-width=\"0.012\" stroke-dasharray=\"0.04 0.03\"")
       << "\n";
-  for (const Wall& w : m.arena.walls) {
+  if (m.arrest)  // where the Coconut arrest rule sends robots that leave
+    out << region_element(m.arrest->jail, "class=\"jail\" fill=\"#c0392b\" fill-opacity=\"0.25\" stroke=\"#c0392b\" stroke-width=\"0.012\" stroke-dasharray=\"0.04 0.03\"")
+        << "\n";
+  const std::vector<std::uint32_t> colors = wall_colors(m);
+  for (std::size_t k = 0; k < m.arena.walls.size(); ++k) {
+    const Wall& w = m.arena.walls[k];
     const double angle = w.axis.angle() * 180.0 / kPi;
-    out << "<rect x=\"" << -w.half_length << "\" y=\"" << -w.half_thickness << "\" width=\"" << 2 * w.half_length
-        << "\" height=\"" << std::max(2 * w.half_thickness, 0.012) << "\" transform=\"translate(" << w.center.x << " "
-        << w.center.y << ") rotate(" << angle << ")\" fill=\"" << (w.led_color ? rgb_text(w.led_color) : "#303030")
-        << "\"/>\n";
+    // Lit LED blocks are drawn thicker, with a dark outline, so that their colours show.
+    const double thickness = std::max(2 * w.half_thickness, colors[k] ? 0.03 : 0.012);
+    out << "<rect class=\"wall\" x=\"" << -w.half_length << "\" y=\"" << -0.5 * thickness << "\" width=\"" << 2 * w.half_length
+        << "\" height=\"" << thickness << "\" transform=\"translate(" << w.center.x << " " << w.center.y << ") rotate(" << angle
+        << ")\" fill=\"" << (colors[k] ? rgb_text(colors[k]) : "#303030") << "\""
+        << (m.led_arena.empty() ? "" : " stroke=\"#202020\" stroke-width=\"0.004\"") << "/>\n";
   }
   for (const Light& l : m.arena.lights) {
     if (l.intensity <= 0) continue;
-    out << "<circle cx=\"" << l.position.x << "\" cy=\"" << l.position.y << "\" r=\"0.05\" fill=\"" << rgb_text(l.rgb)
+    out << "<circle class=\"light\" cx=\"" << l.position.x << "\" cy=\"" << l.position.y << "\" r=\"0.05\" fill=\"" << rgb_text(l.rgb)
         << "\" stroke=\"#806000\" stroke-width=\"0.01\"/>\n";
   }
-  out << "</g>\n</svg>\n";
+  out << "</g>\n";
+  for (std::size_t i = 0; i < captions.size(); ++i)
+    // Text drawn at 1000x and scaled down: renderers hint tiny font sizes badly.
+    out << "<text class=\"caption\" transform=\"translate(" << lo.x + 0.05 << " " << -lo.y + kLine * (static_cast<double>(i) + 0.75)
+        << ") scale(0.001)\" font-family=\"sans-serif\" font-size=\"45\">" << captions[i] << "</text>\n";
+  out << "</svg>\n";
   return out.str();
 }
 

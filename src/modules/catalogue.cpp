@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 
 namespace sd {
 
@@ -96,9 +97,16 @@ std::vector<ModuleSpec> build_conditions() {
   return c;
 }
 
+std::vector<ModuleSpec> checked(std::vector<ModuleSpec> table) {
+  // ModuleInstance keeps parameters in a fixed array: no module may have more.
+  for (const ModuleSpec& m : table)
+    if (m.parameters.size() > static_cast<std::size_t>(kMaxModuleParameters)) std::abort();
+  return table;
+}
+
 const std::vector<ModuleSpec>& table(ModuleKind kind) {
-  static const std::vector<ModuleSpec> behaviours = build_behaviours();
-  static const std::vector<ModuleSpec> conditions = build_conditions();
+  static const std::vector<ModuleSpec> behaviours = checked(build_behaviours());
+  static const std::vector<ModuleSpec> conditions = checked(build_conditions());
   return kind == ModuleKind::Behaviour ? behaviours : conditions;
 }
 
@@ -150,7 +158,7 @@ std::string ParameterSpec::domain_text() const {
          number_text(max) + "]";
 }
 
-bool ModuleSpec::parameter_active(std::size_t p, const std::array<double, 4>& values) const {
+bool ModuleSpec::parameter_active(std::size_t p, const std::array<double, kMaxModuleParameters>& values) const {
   const ParameterSpec& spec = parameters[p];
   if (spec.active_if.empty()) return true;
   const int other = parameter_index(spec.active_if);

@@ -34,7 +34,7 @@ struct ParameterSpec {
   std::string domain_text() const;
 };
 
-inline constexpr int kMaxModuleParameters = 4;
+inline constexpr int kMaxModuleParameters = 6;  // Coconut's Attraction has 5: att, exp, rwm, mu, rho
 
 /// The inputs a module reads, so that a run simulates only the sensors it needs.
 enum Input : std::uint8_t {
@@ -57,7 +57,7 @@ struct ModuleSpec {
   /// Index of the parameter with this token, or -1.
   int parameter_index(std::string_view token) const;
   /// Whether parameter p applies given the values of the others.
-  bool parameter_active(std::size_t p, const std::array<double, 4>& values) const;
+  bool parameter_active(std::size_t p, const std::array<double, kMaxModuleParameters>& values) const;
 };
 
 /// Every module of a kind, in id order.

@@ -35,11 +35,15 @@ Vec2 sample_point(const Region& region, Rng& rng) {
 }
 
 void place_robots(const ArenaModel& arena, const Region& start, SwarmState& swarm, Rng& rng) {
+  place_robots(arena, [&start](Rng& g) { return sample_point(start, g); }, swarm, rng);
+}
+
+void place_robots(const ArenaModel& arena, const std::function<Vec2(Rng&)>& sample, SwarmState& swarm, Rng& rng) {
   constexpr double r = epuck::kBodyRadius;
   for (int i = 0; i < swarm.size; ++i) {
     bool placed = false;
     for (int trial = 0; trial < kPlacementTrials && !placed; ++trial) {
-      const Vec2 p = sample_point(start, rng);
+      const Vec2 p = sample(rng);
       const double yaw = rng.uniform(0.0, kTwoPi);
       bool free = true;
       for (const Wall& wall : arena.walls)

@@ -3,6 +3,7 @@
 #include <signal.h>
 
 #include <cerrno>
+#include <fstream>
 
 #include "storage/clock.hpp"
 #include "storage/errors.hpp"
@@ -41,9 +42,18 @@ Design read_design(const Statement& row, const Workspace& workspace) {
   return design;
 }
 
+/// A zombie (killed, not yet reaped by whoever adopted it) answers kill(pid, 0) but runs nothing.
+bool is_zombie(std::int64_t pid) {
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string line;
+  if (!std::getline(stat, line)) return false;
+  const auto end_of_name = line.rfind(')');  // the name may hold spaces and parentheses
+  return end_of_name != std::string::npos && end_of_name + 2 < line.size() && line[end_of_name + 2] == 'Z';
+}
+
 /// A process that no longer exists cannot be running a design (EPERM: it exists, not ours).
 bool process_alive(std::int64_t pid) {
-  return pid > 0 && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM);
+  return pid > 0 && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM) && !is_zombie(pid);
 }
 }  // namespace
 
@@ -124,6 +134,12 @@ Design Designs::resume(std::int64_t design_id, int pid) {
   db.prepare("UPDATE designs SET pid = ? WHERE id = ?").bind(1, pid).bind(2, design_id).run();
   transaction.commit();
   return get(design_id);
+}
+
+void Designs::set_pid(std::int64_t design_id, int pid) {
+  workspace_.database()
+      .prepare("UPDATE designs SET pid = ?, updated_at = ? WHERE id = ? AND project_id = ? AND state = 'running'")
+      .bind(1, pid).bind(2, unix_now()).bind(3, design_id).bind(4, project_.id).run();
 }
 
 void Designs::finish(std::int64_t design_id, const std::string& best_config, double best_score) {

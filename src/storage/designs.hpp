@@ -50,6 +50,8 @@ class Designs {
   Design start(const DesignRequest& request);
   /// Marks an interrupted (or failed) design running again under a new process.
   Design resume(std::int64_t design_id, int pid);
+  /// The process that now runs a running design (a detached design goes on in a child).
+  void set_pid(std::int64_t design_id, int pid);
   void finish(std::int64_t design_id, const std::string& best_config, double best_score);
   void mark_failed(std::int64_t design_id);
 

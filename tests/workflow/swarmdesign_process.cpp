@@ -143,4 +143,18 @@ Outcome run_swarmdesign_on_terminal(const std::vector<std::string>& args,
   return outcome;
 }
 
+int start_swarmdesign(const std::vector<std::string>& args, const Environment& environment,
+                      const std::string& stdout_file, const std::string& stderr_file) {
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, stdout_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, stderr_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+  const pid_t pid = spawn(args, environment, &actions);
+  posix_spawn_file_actions_destroy(&actions);
+  return pid;
+}
+
+int wait_swarmdesign(int pid) { return wait_for(pid); }
+
 }  // namespace sd::test

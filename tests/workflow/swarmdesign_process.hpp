@@ -28,4 +28,11 @@ Outcome run_swarmdesign_on_terminal(const std::vector<std::string>& args,
                                     const std::vector<std::pair<std::string, std::string>>& answers,
                                     const Environment& environment);
 
+/// Starts `swarmdesign args...` in the background with stdin from /dev/null and stdout/stderr
+/// into the given files; returns its process id.
+int start_swarmdesign(const std::vector<std::string>& args, const Environment& environment,
+                      const std::string& stdout_file, const std::string& stderr_file);
+/// Waits for a process started by start_swarmdesign: its exit code, -1 when a signal ended it.
+int wait_swarmdesign(int pid);
+
 }  // namespace sd::test

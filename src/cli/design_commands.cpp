@@ -1,0 +1,133 @@
+// Designing without an account: `design` (run or resume a design process in a folder) and
+// `irace-export` (let the real irace 3.5 drive SwarmDesign's evaluator).
+#include <CLI/CLI.hpp>
+#include <unistd.h>
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "cli/command_registry.hpp"
+#include "cli/design_flags.hpp"
+#include "cli/design_run.hpp"
+#include "design/irace_export.hpp"
+#include "missions/catalogue.hpp"
+
+namespace sd::cli {
+namespace {
+
+struct DesignOptions {
+  std::string mission, budget, seed, out, resume;
+  unsigned threads = 0;
+  bool json = false;
+  DesignSpaceFlags flags;
+};
+
+void run_design_command(const DesignOptions& o) {
+  PreparedDesign prepared;
+  if (!o.resume.empty()) {
+    if (!o.mission.empty() || !o.budget.empty() || !o.seed.empty() || !o.out.empty() || o.flags.any())
+      throw UsageError("--resume continues a design with the settings it was started with; give only --threads or --json with it");
+    prepared = prepare_resume(o.resume);
+  } else {
+    if (o.mission.empty()) throw UsageError("--mission is required (or --resume DIR)");
+    if (o.budget.empty()) throw UsageError("--budget is required (or --resume DIR)");
+    NewDesignSettings settings{o.mission, parse_budget(o.budget), o.flags.request(),
+                               o.seed.empty() ? random_seed() : parse_seed(o.seed)};
+    prepared = prepare_new_design(settings, o.out);
+  }
+  for (const auto& note : prepared.choice.notes) std::cerr << "swarmdesign: note: " << note << "\n";
+  if (!o.json)
+    std::cout << (prepared.resuming ? "Resuming the design in " : "Designing in ") << prepared.folder.string()
+              << " (mission " << prepared.mission.name << ", budget " << prepared.options.max_experiments
+              << ", seed " << prepared.options.seed << ")\n"
+              << std::flush;
+  const DesignReport report = run_prepared_design(prepared, {o.threads, isatty(STDERR_FILENO) != 0 && !o.json, false});
+  print_design_report(report, o.json);
+}
+
+void register_design(CLI::App& app) {
+  auto* cmd = app.add_subcommand("design", "Design control software for a mission with Iterated F-Race");
+  auto o = std::make_shared<DesignOptions>();
+  cmd->add_option("--mission", o->mission, "Mission name or mission file");
+  cmd->add_option("--budget", o->budget, "Design budget: the number of simulation runs the optimiser may use");
+  add_design_space_flags(*cmd, o->flags);
+  cmd->add_option("--seed", o->seed, "Seed of the design (default: a random one, printed); same seed, same result");
+  cmd->add_option("--threads", o->threads, "Simulations in parallel (default: all cores); the result does not depend on it")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--out", o->out, "Folder of the design (default: ./design-<mission>-seed<S>)");
+  cmd->add_option("--resume", o->resume, "Continue the design kept in DIR (after it was interrupted or killed)");
+  cmd->add_flag("--json", o->json, "Print the final report as one JSON document");
+  cmd->footer(
+      "Architecture flags: --fsm, --bt (none = all that exist). Flavour flags: --chocolate, --tuttifrutti,\n"
+      "--coconut, --maple, --arlequin (none = all that exist). The design keeps its whole state in\n"
+      "DIR/design.db after every race step, so a killed design continues with --resume DIR and ends\n"
+      "exactly as if it had never stopped.\n\n"
+      "Example:\n  swarmdesign design --mission aac --budget 20000 --fsm --chocolate --seed 1 --out aac-1\n"
+      "  swarmdesign design --resume aac-1");
+  cmd->callback([o] { run_design_command(*o); });
+}
+
+struct ExportOptions {
+  std::string mission, budget = "5000", seed, out;
+  int iterations = 0;
+  DesignSpaceFlags flags;
+};
+
+void run_irace_export(const ExportOptions& o) {
+  Mission mission;
+  try {
+    mission = load_mission(o.mission);
+  } catch (const MissionError& e) {
+    throw UsageError(e.what());
+  }
+  design::DesignSpaceChoice choice;
+  try {
+    choice = design::resolve_design_space(o.flags.request());
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  for (const auto& note : choice.notes) std::cerr << "swarmdesign: note: " << note << "\n";
+  const design::ParameterSpace space = design::build_design_space(choice);
+
+  design::IraceScenarioSpec scenario;
+  scenario.max_experiments = parse_budget(o.budget);
+  scenario.seed = o.seed.empty() ? 0 : parse_seed(o.seed);
+  scenario.digits = space.digits();
+  scenario.nb_iterations = o.iterations;
+  design::TargetRunnerSpec runner;
+  runner.executable = std::filesystem::read_symlink("/proc/self/exe").string();
+  runner.mission = mission_reference(o.mission);
+  runner.maximise = mission.objective.direction == Direction::Maximize;
+  design::write_irace_files(o.out, space, scenario, {mission.name}, runner);
+  std::cout << "Wrote parameters.txt, scenario.txt, instances.txt and target-runner to " << o.out << ".\n"
+            << "Run irace 3.5 with:\n  cd " << o.out
+            << " && Rscript -e 'irace::irace.cmdline(c(\"--scenario\", \"scenario.txt\"))'\n";
+}
+
+void register_irace_export(CLI::App& app) {
+  auto* cmd = app.add_subcommand("irace-export", "Write the files with which irace 3.5 drives SwarmDesign's evaluator");
+  auto o = std::make_shared<ExportOptions>();
+  cmd->add_option("--mission", o->mission, "Mission name or mission file")->required();
+  add_design_space_flags(*cmd, o->flags);
+  cmd->add_option("--out", o->out, "Folder to write parameters.txt, scenario.txt, instances.txt, target-runner")
+      ->required();
+  cmd->add_option("--budget", o->budget, "maxExperiments of the scenario (default 5000)");
+  cmd->add_option("--seed", o->seed, "irace's seed (default: irace picks one)");
+  cmd->add_option("--iterations", o->iterations, "nbIterations of the scenario (default: irace's own)")
+      ->check(CLI::PositiveNumber);
+  cmd->footer(
+      "target-runner calls this swarmdesign's `evaluate` and prints the cost (the score, negated for\n"
+      "missions that are maximised); set $SWARMDESIGN to use another executable.\n\n"
+      "Example:\n  swarmdesign irace-export --mission aac --fsm --chocolate --budget 20000 --out aac-irace\n"
+      "  cd aac-irace && Rscript -e 'irace::irace.cmdline(c(\"--scenario\", \"scenario.txt\"))'");
+  cmd->callback([o] { run_irace_export(*o); });
+}
+
+const CommandRegistrar registrar{15, [](CLI::App& app, Context&) {
+                                   register_design(app);
+                                   register_irace_export(app);
+                                 }};
+
+}  // namespace
+}  // namespace sd::cli

@@ -1,0 +1,52 @@
+#include "cli/design_flags.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <random>
+
+#include "storage/validation.hpp"
+
+namespace sd::cli {
+
+design::DesignSpaceRequest DesignSpaceFlags::request() const {
+  design::DesignSpaceRequest r;
+  r.fsm = fsm;
+  r.bt = bt;
+  if (chocolate) r.flavours.push_back(Flavour::Chocolate);
+  if (tuttifrutti) r.flavours.push_back(Flavour::TuttiFrutti);
+  if (coconut) r.flavours.push_back(Flavour::Coconut);
+  if (maple) r.flavours.push_back(Flavour::Maple);
+  if (arlequin) r.flavours.push_back(Flavour::Arlequin);
+  return r;
+}
+
+bool DesignSpaceFlags::any() const { return fsm || bt || chocolate || tuttifrutti || coconut || maple || arlequin; }
+
+void add_design_space_flags(CLI::App& command, DesignSpaceFlags& flags) {
+  command.add_flag("--fsm", flags.fsm, "Design probabilistic finite-state machines");
+  command.add_flag("--bt", flags.bt, "Design behaviour trees (not available yet)");
+  command.add_flag("--chocolate", flags.chocolate, "Use the Chocolate modules");
+  command.add_flag("--tuttifrutti", flags.tuttifrutti, "Use the TuttiFrutti modules (not available yet)");
+  command.add_flag("--coconut", flags.coconut, "Use the Coconut modules (not available yet)");
+  command.add_flag("--maple", flags.maple, "Use the Maple modules (not available yet)");
+  command.add_flag("--arlequin", flags.arlequin, "Use the Arlequin modules (not available yet)");
+}
+
+std::uint64_t parse_seed(const std::string& text) {
+  if (text.empty() || text.size() > 19 || text.find_first_not_of("0123456789") != std::string::npos)
+    throw UsageError("--seed '" + text + "': expected a non-negative integer");
+  return std::stoull(text);
+}
+
+std::uint64_t random_seed() {
+  std::random_device device;
+  return std::uniform_int_distribution<std::uint64_t>(1, 2147483647)(device);
+}
+
+long long parse_budget(const std::string& text) {
+  const auto budget = storage::parse_positive_integer(text);
+  if (!budget) throw UsageError("the budget must be a positive integer (a number of simulation runs), not '" + text + "'");
+  return *budget;
+}
+
+}  // namespace sd::cli

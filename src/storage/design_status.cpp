@@ -1,0 +1,122 @@
+#include "storage/design_status.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include "storage/design_store.hpp"
+
+namespace sd::storage {
+
+namespace {
+
+using nlohmann::json;
+
+/// Holds a read transaction for the reader's lifetime: one consistent snapshot.
+class Snapshot {
+ public:
+  explicit Snapshot(const std::filesystem::path& folder) : store_(DesignStore::open(folder)) {
+    store_.database().execute("BEGIN");
+  }
+  ~Snapshot() {
+    try {
+      store_.database().execute("COMMIT");
+    } catch (const DatabaseError&) {
+    }
+  }
+  Snapshot(const Snapshot&) = delete;
+  Snapshot& operator=(const Snapshot&) = delete;
+  Database& db() { return store_.database(); }
+  double score(double cost) const { return store_.meta().direction == "minimize" ? cost : -cost; }
+  std::int64_t budget() const { return store_.meta().budget; }
+
+ private:
+  DesignStore store_;
+};
+
+std::int64_t count(Database& db, const std::string& sql) {
+  auto q = db.prepare(sql);
+  q.step();
+  return q.integer(0);
+}
+
+ConfigurationScore configuration_score(Snapshot& s, int id, std::optional<int> iteration = std::nullopt) {
+  ConfigurationScore c;
+  c.id = id;
+  auto line = s.db().prepare("SELECT command_line FROM configurations WHERE id = ?");
+  line.bind(1, id);
+  if (line.step()) c.command_line = line.text(0);
+  auto runs = s.db().prepare(iteration ? "SELECT avg(cost), count(*) FROM experiments WHERE configuration_id = ? AND iteration = ?"
+                                       : "SELECT avg(cost), count(*) FROM experiments WHERE configuration_id = ?");
+  runs.bind(1, id);
+  if (iteration) runs.bind(2, *iteration);
+  runs.step();
+  c.runs = runs.integer(1);
+  if (c.runs > 0 && !runs.is_null(0)) c.mean_score = s.score(runs.real(0));
+  return c;
+}
+
+}  // namespace
+
+DesignProgress read_design_progress(const std::filesystem::path& folder) {
+  Snapshot s(folder);
+  DesignProgress p;
+  p.budget = s.budget();
+  auto checkpoint = s.db().prepare("SELECT state FROM checkpoint WHERE id = 1");
+  if (!checkpoint.step()) return p;
+  const json state = json::parse(checkpoint.text(0));
+  p.started = true;
+  p.phase = state.at("phase").get<std::string>();
+  p.nb_iterations = state.at("nb_iterations").get<int>();
+  const int finished_iterations = static_cast<int>(state.at("all_elites").size());
+  p.iteration = p.phase == "racing" ? state.at("iteration").get<int>() : std::max(1, finished_iterations);
+  p.experiments_used = count(s.db(), "SELECT count(*) FROM experiments");
+  p.race_budget = state.at("current_budget").get<std::int64_t>();
+  p.race_configurations = state.at("nb_configurations").get<int>();
+  if (p.phase == "finished") {  // the figures of the last race run, not of one refused for lack of budget
+    p.nb_iterations = p.iteration;
+    auto last = s.db().prepare("SELECT race_budget, configurations FROM races ORDER BY iteration DESC LIMIT 1");
+    if (last.step()) {
+      p.race_budget = last.integer(0);
+      p.race_configurations = static_cast<int>(last.integer(1));
+    }
+  }
+  p.configurations_sampled = count(s.db(), "SELECT count(*) FROM configurations");
+  p.finish_reason = state.at("finish_reason").get<std::string>();
+  const json& elites = state.at("elites");
+  const json& race = state.at("race");
+  if (!elites.empty()) {
+    p.best = configuration_score(s, elites.at(0).at(0).get<int>());
+  } else if (!race.is_null() && race.at("next_task").get<std::size_t>() > 1) {
+    p.best = configuration_score(s, race.at("config_ids").at(race.at("best").get<std::size_t>()).get<int>());
+  }
+  return p;
+}
+
+std::vector<RaceRecord> read_race_log(const std::filesystem::path& folder) {
+  Snapshot s(folder);
+  std::vector<RaceRecord> log;
+  auto races = s.db().prepare("SELECT iteration, race_budget FROM races ORDER BY iteration");
+  while (races.step()) log.push_back({static_cast<int>(races.integer(0)), races.integer(1), {}, {}, {}});
+  for (RaceRecord& r : log) {
+    auto instances = s.db().prepare(
+        "SELECT position, seed FROM experiments WHERE iteration = ? GROUP BY position ORDER BY min(seq)");
+    instances.bind(1, r.iteration);
+    while (instances.step()) r.instances.emplace_back(instances.integer(0), instances.integer(1));
+    auto members = s.db().prepare(
+        "SELECT configuration_id, elite, eliminated_after FROM race_configurations WHERE iteration = ? "
+        "ORDER BY elite DESC, configuration_id");
+    members.bind(1, r.iteration);
+    while (members.step()) {
+      RaceMember m;
+      m.configuration = configuration_score(s, static_cast<int>(members.integer(0)), r.iteration);
+      m.elite = members.integer(1) != 0;
+      if (!members.is_null(2)) m.eliminated_after = members.integer(2);
+      r.members.push_back(std::move(m));
+    }
+    auto elites = s.db().prepare("SELECT configuration_id FROM elites WHERE iteration = ? ORDER BY rank");
+    elites.bind(1, r.iteration);
+    while (elites.step()) r.elites.push_back(static_cast<int>(elites.integer(0)));
+  }
+  return log;
+}
+
+}  // namespace sd::storage

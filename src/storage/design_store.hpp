@@ -1,0 +1,99 @@
+#pragma once
+// A design's whole state in its own folder: DIR/design.db, written by the process that runs
+// the design after every race step and read by `design --resume` and `status` (from another
+// process while it runs: WAL, busy timeout).
+//
+// Tables (format version kDesignFormatVersion):
+//   meta(key, value)                      format, version, mission, direction, budget, flags, seed,
+//                                         fingerprint of the parameter space and options
+//   configurations(id, parent, iteration, record, command_line)
+//                                         every configuration sampled; record = exact values (JSON)
+//   experiments(seq, iteration, position, seed, configuration_id, cost)
+//                                         every result, once: UNIQUE(configuration_id, position)
+//   races(iteration, race_budget, configurations)          one row per race started
+//   race_configurations(iteration, configuration_id, elite, eliminated_after)
+//                                         who raced, and after how many instances it was dropped
+//   elites(iteration, rank, configuration_id)              elites at the end of every iteration
+//   checkpoint(id = 1, step, phase, state, saved_at)       the engine's compact state (JSON)
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "design/iterated_race.hpp"
+#include "design/race_log.hpp"
+#include "storage/sqlite.hpp"
+
+namespace sd::storage {
+
+inline constexpr int kDesignFormatVersion = 1;
+
+/// A folder that cannot be used as asked (not a design, another format, corrupted, finished,
+/// already holds a design). The message is the user's one-line explanation.
+struct DesignFolderError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct DesignMeta {
+  std::string mission;        // catalogue name or absolute path of a mission file
+  std::string direction;      // "maximize" or "minimize"
+  std::int64_t budget = 0;
+  std::string architectures;  // "fsm"
+  std::string flavours;       // "chocolate"
+  std::uint64_t seed = 0;
+  std::string fingerprint;    // IteratedRace::fingerprint(): parameter space and options
+};
+
+class DesignStore {
+ public:
+  static std::filesystem::path file_in(const std::filesystem::path& folder) { return folder / "design.db"; }
+
+  /// Creates DIR/design.db for a new design; DesignFolderError when it already exists.
+  static DesignStore create(const std::filesystem::path& folder, const DesignMeta& meta);
+  /// Opens an existing design; DesignFolderError for a folder without one, another format
+  /// version, or a damaged file. `check_integrity` runs SQLite's quick_check (for resume).
+  static DesignStore open(const std::filesystem::path& folder, bool check_integrity = false);
+
+  const DesignMeta& meta() const { return meta_; }
+  const std::filesystem::path& folder() const { return folder_; }
+  Database& database() { return *db_; }
+
+  /// Appends what is new since the last checkpoint and replaces the engine state, in one
+  /// transaction.
+  void save(const design::Checkpoint& checkpoint, std::span<const design::Elimination> eliminations,
+            const design::ParameterSpace& space);
+  /// The last checkpoint with its whole history, or nullopt when the design saved none yet.
+  /// DesignFolderError when the stored state does not fit together.
+  std::optional<design::DesignState> load_state();
+
+ private:
+  DesignStore(std::filesystem::path folder, std::unique_ptr<Database> db);
+  void read_meta();
+
+  std::filesystem::path folder_;
+  std::unique_ptr<Database> db_;
+  DesignMeta meta_;
+  std::int64_t step_ = 0;
+  std::size_t elite_iterations_ = 0;  // rows of `elites` already written, by iteration
+  int race_logged_ = 0;               // last iteration with a `races` row
+};
+
+/// Held by the one process that runs a design: a second process (say `design --resume` on a
+/// folder that run-design is running) is refused instead of writing the same results twice.
+/// An flock on DIR/design.lock, so the kernel releases it when the holder dies, even by kill -9.
+class DesignRunLock {
+ public:
+  explicit DesignRunLock(const std::filesystem::path& folder);  // DesignFolderError when held
+  ~DesignRunLock();
+  DesignRunLock(const DesignRunLock&) = delete;
+  DesignRunLock& operator=(const DesignRunLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
+}  // namespace sd::storage

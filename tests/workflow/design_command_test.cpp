@@ -1,0 +1,139 @@
+// `swarmdesign design` end to end: the real binary on a 10-second AAC, killed with SIGKILL and
+// resumed, run on 1 and 2 threads, and given folders it must refuse.
+#include <gtest/gtest.h>
+#include <signal.h>
+
+#include <fstream>
+
+#include "storage/sqlite.hpp"
+#include "workflow/design_helpers.hpp"
+#include "workflow/workflow_fixture.hpp"
+
+namespace sd::test {
+namespace {
+
+using namespace std::chrono_literals;
+
+class design_command : public WorkflowTest {
+ protected:
+  void SetUp() override {
+    WorkflowTest::SetUp();
+    mission_ = write_short_mission(scratch()).string();
+  }
+  std::vector<std::string> design_args(const std::string& out, int budget, int seed, int threads) const {
+    return {"design", "--mission", mission_, "--budget", std::to_string(budget), "--seed", std::to_string(seed),
+            "--threads", std::to_string(threads), "--out", (scratch() / out).string(), "--json", "--fsm", "--chocolate"};
+  }
+  /// Starts a design in the background and SIGKILLs it once it has saved `steps` more checkpoints.
+  void kill_after(const std::vector<std::string>& args, const std::filesystem::path& folder, std::int64_t steps) {
+    const std::int64_t before = checkpoint_step(folder);
+    const int pid = start_swarmdesign(args, environment(), (scratch() / "bg.out").string(), (scratch() / "bg.err").string());
+    const bool reached = wait_until([&] { return checkpoint_step(folder) >= before + steps; }, 60s);
+    ::kill(pid, SIGKILL);
+    EXPECT_EQ(wait_swarmdesign(pid), -1) << "the design ended before it could be killed";
+    ASSERT_TRUE(reached) << "no checkpoint after 60 s";
+  }
+  std::string mission_;
+};
+
+TEST_F(design_command, KilledTwiceAndResumedItEndsExactlyAsAnUninterruptedRun) {
+  const std::string uninterrupted = run_ok(design_args("whole", 1500, 7, 2));
+  ASSERT_FALSE(uninterrupted.empty());
+
+  const auto folder = scratch() / "killed";
+  kill_after(design_args("killed", 1500, 7, 2), folder, 15);
+  const std::int64_t first_kill = checkpoint_step(folder);
+  // The resumed process gets the stored settings only; a second kill lands mid-race as well.
+  kill_after({"design", "--resume", folder.string(), "--threads", "2", "--json"}, folder, 25);
+  EXPECT_GT(checkpoint_step(folder), first_kill);
+  const std::string resumed = run_ok({"design", "--resume", folder.string(), "--threads", "1", "--json"});
+
+  EXPECT_EQ(design_outcome(resumed), design_outcome(uninterrupted));
+  EXPECT_TRUE(nlohmann::json::parse(resumed).at("resumed").get<bool>());
+  // Every experiment is stored once, in the order an uninterrupted run stores it.
+  EXPECT_EQ(experiment_log(folder), experiment_log(scratch() / "whole"));
+  storage::Database db(folder / "design.db", false);
+  auto count = db.prepare("SELECT count(*) FROM experiments");
+  count.step();
+  EXPECT_EQ(count.integer(0), nlohmann::json::parse(resumed).at("experiments_used").get<std::int64_t>());
+}
+
+TEST_F(design_command, TheResultDoesNotDependOnTheThreadCount) {
+  const std::string one = run_ok(design_args("one", 1100, 3, 1));
+  const std::string two = run_ok(design_args("two", 1100, 3, 2));
+  EXPECT_EQ(design_outcome(one), design_outcome(two));
+  EXPECT_EQ(experiment_log(scratch() / "one"), experiment_log(scratch() / "two"));
+}
+
+TEST_F(design_command, FoldersThatHoldNoResumableDesignAreRefused) {
+  const auto empty = scratch() / "empty";
+  std::filesystem::create_directories(empty);
+  expect_error(run({"design", "--resume", empty.string()}), 1, "is not a design folder");
+  expect_error(run({"design", "--resume", (scratch() / "missing").string()}), 1, "is not a folder");
+
+  const auto garbage = scratch() / "garbage";
+  std::filesystem::create_directories(garbage);
+  std::ofstream(garbage / "design.db") << "this is not a database, just text that lost its way\n";
+  expect_error(run({"design", "--resume", garbage.string()}), 1, "damaged");
+
+  const auto foreign = scratch() / "foreign";
+  std::filesystem::create_directories(foreign);
+  storage::Database(foreign / "design.db").execute("CREATE TABLE notes (text TEXT)");
+  expect_error(run({"design", "--resume", foreign.string()}), 1, "not a SwarmDesign design database");
+
+  const auto finished = scratch() / "finished";
+  run_ok(design_args("finished", 1100, 5, 2));
+  expect_error(run({"design", "--resume", finished.string()}), 1, "has already finished");
+  expect_error(run(design_args("finished", 1100, 5, 2)), 1, "already holds a design");
+
+  storage::Database(finished / "design.db").execute("UPDATE meta SET value = '99' WHERE key = 'format_version'");
+  expect_error(run({"design", "--resume", finished.string()}), 1, "format version 99");
+  storage::Database(finished / "design.db").execute("UPDATE meta SET value = '1' WHERE key = 'format_version'");
+  storage::Database(finished / "design.db").execute("UPDATE checkpoint SET state = '{\"truncated\": ' WHERE id = 1");
+  expect_error(run({"design", "--resume", finished.string()}), 1, "cannot be read");
+}
+
+TEST_F(design_command, BadRequestsGetOneLineErrors) {
+  const auto minimum =
+      run({"design", "--mission", mission_, "--budget", "300", "--fsm", "--chocolate", "--out", (scratch() / "x").string()});
+  expect_error(minimum, 2, "below the minimum of 1008");
+  expect_error(run({"design", "--mission", mission_, "--budget", "-5"}), 2, "positive integer");
+  expect_error(run({"design", "--mission", mission_, "--budget", "ten"}), 2, "positive integer");
+  expect_error(run({"design", "--mission", "no-such-mission", "--budget", "2000"}), 2, "unknown mission");
+  expect_error(run({"design", "--mission", mission_, "--budget", "200", "--bt", "--maple"}), 2, "below the minimum");
+  expect_error(run({"design", "--budget", "2000"}), 2, "--mission is required");
+  expect_error(run({"design", "--resume", scratch().string(), "--budget", "2000"}), 2, "--resume");
+  EXPECT_FALSE(std::filesystem::exists(scratch() / "x"));
+}
+
+TEST_F(design_command, ShowsProgressOnATerminalAndTheBestControlSoftwareAtTheEnd) {
+  const auto on_terminal = run_swarmdesign_on_terminal(
+      {"design", "--mission", mission_, "--budget", "1100", "--seed", "2", "--fsm", "--chocolate", "--out",
+       (scratch() / "tty").string()},
+      {},
+      environment());
+  EXPECT_EQ(on_terminal.exit_code, 0) << on_terminal.out;
+  EXPECT_NE(on_terminal.out.find("iteration 1/"), std::string::npos) << on_terminal.out;
+  EXPECT_NE(on_terminal.out.find("alive "), std::string::npos);
+  EXPECT_NE(on_terminal.out.find("Finite-state machine"), std::string::npos);
+  EXPECT_NE(on_terminal.out.find("Configuration string:"), std::string::npos);
+
+  // Piped, the same design prints no progress, and the configuration string it reports is
+  // control software that `evaluate` accepts.
+  const auto piped = run({"design", "--mission", mission_, "--budget", "1100", "--seed", "2", "--fsm", "--chocolate", "--out",
+                          (scratch() / "pipe").string()});
+  EXPECT_EQ(piped.exit_code, 0);
+  EXPECT_EQ(piped.err, "");
+  const std::string marker = "Configuration string:\n  ";
+  const auto at = piped.out.find(marker);
+  ASSERT_NE(at, std::string::npos) << piped.out;
+  const auto begin = at + marker.size();
+  const std::string line = piped.out.substr(begin, piped.out.find('\n', begin) - begin);
+  std::vector<std::string> args{"evaluate", "--mission", mission_, "--seed", "5"};
+  std::istringstream tokens(line);
+  for (std::string t; tokens >> t;) args.push_back(t);
+  EXPECT_NE(run_ok(args).find("Score "), std::string::npos);
+}
+
+}  // namespace
+}  // namespace sd::test
