@@ -1,5 +1,5 @@
 // Calibration against ARGoS3-AutoMoDe (tests/data/argos-reference.csv, copied from the
-// project's calibration set): five Chocolate FSMs on AAC, seeds 1-20. Seeds differ between
+// project's calibration set): five Chocolate FSMs on AAC and on foraging, seeds 1-20. Seeds differ between
 // the simulators, so we compare distributions: every mean lands within one standard
 // deviation of ARGoS's, and the controllers rank the same.
 #include <gtest/gtest.h>
@@ -47,10 +47,12 @@ double stdev(const std::vector<double>& v) {
   return std::sqrt(s / static_cast<double>(v.size() - 1));
 }
 
-TEST(Calibration, AacControllersLandWithinArgosSpreadAndRankAlike) {
-  const auto refs = read_reference("aac");
+class Calibration : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(Calibration, ControllersLandWithinArgosSpreadAndRankAlike) {
+  const auto refs = read_reference(GetParam());
   ASSERT_EQ(refs.size(), 5u);
-  const Mission mission = load_mission("aac");
+  const Mission mission = load_mission(GetParam());
   ThreadedEvaluator evaluator(0);
   std::vector<std::pair<double, std::string>> ours, theirs;
   for (const auto& [name, ref] : refs) {
@@ -68,6 +70,8 @@ TEST(Calibration, AacControllersLandWithinArgosSpreadAndRankAlike) {
   std::sort(theirs.begin(), theirs.end());
   for (std::size_t i = 0; i < ours.size(); ++i) EXPECT_EQ(ours[i].second, theirs[i].second) << "rank " << i;
 }
+
+INSTANTIATE_TEST_SUITE_P(ArgosReference, Calibration, ::testing::Values("aac", "foraging"));
 
 }  // namespace
 }  // namespace sd
