@@ -19,10 +19,17 @@ ControlSoftware network_software() {
   return software;
 }
 
+void mutate(arlequin::Weights& weights, const Settings& s, Rng& rng) {
+  for (double& w : weights)
+    if (rng.uniform() < s.mutation_probability)
+      w = std::clamp(w + s.mutation_sigma * rng.normal(), -s.weight_bound, s.weight_bound);
+}
+
+/// The silent network (every weight 0: both wheels stopped, every input in the sigmoid's
+/// sensitive range) and mutants of it.
 std::vector<ControlSoftware> initial_population(const Settings& s, Rng& rng) {
   std::vector<ControlSoftware> population(static_cast<std::size_t>(s.population), network_software());
-  for (ControlSoftware& individual : population)
-    for (double& w : individual.network.weights) w = rng.uniform(-s.weight_bound, s.weight_bound);
+  for (std::size_t p = 1; p < population.size(); ++p) mutate(population[p].network.weights, s, rng);
   return population;
 }
 
@@ -35,9 +42,7 @@ std::vector<ControlSoftware> next_generation(const std::vector<ControlSoftware>&
   for (std::size_t k = 0; k < elites; ++k) next.push_back(population[ranking[k]]);
   while (next.size() < population.size()) {
     ControlSoftware child = next[rng.below(static_cast<std::uint32_t>(elites))];
-    for (double& w : child.network.weights)
-      if (rng.uniform() < s.mutation_probability)
-        w = std::clamp(w + s.mutation_sigma * rng.normal(), -s.weight_bound, s.weight_bound);
+    mutate(child.network.weights, s, rng);
     next.push_back(std::move(child));
   }
   return next;

@@ -2,7 +2,8 @@
 // EvoStick: the neuro-evolution baseline of the AutoMoDe papers, evolving the 50 weights of
 // the Arlequin perceptron (arlequin.hpp) with a generational algorithm:
 //
-//   generation 1: `population` networks, every weight uniform in [-bound, bound];
+//   generation 1: the silent network (every weight 0) and population - 1 mutants of it
+//     (the mutation below applied once);
 //   every generation: draw `evaluations` seeds; run every network once per seed (the same
 //     seeds for all, so networks are compared on the same conditions); rank the networks by
 //     their mean score (ties keep the earlier network first);
@@ -26,12 +27,12 @@
 namespace sd::evostick {
 
 /// Defaults: the settings the AutoMoDe papers report for EvoStick (population 100, 10 runs
-/// per individual, 20 elites, weights in [-5, 5]). The mutation is ours, chosen on short
-/// phototaxis and stop evolutions (data/arlequin/README.md): noise of sigma 1 (a tenth of
-/// the weight range) on each weight with probability 0.3 (15 of 50 on average). Sparse
-/// large steps beat small steps on every weight (sigma 0.1 or 0.3) and large steps on every
-/// weight: the neighbour inputs 20-23 are in cm, so a network that must not follow its
-/// neighbours needs those weights near 0, and noise on every weight keeps undoing that.
+/// per individual, 20 elites, weights in [-5, 5]). The start and the mutation are ours,
+/// chosen on short evolutions (src/evostick/README.md): the neighbour inputs 20-23 are in
+/// cm (up to ~70), so a network with random weights in [-5, 5] is saturated by its
+/// neighbours whatever else it senses, a flat landscape for selection; starting from the
+/// silent network and mutating a few weights at a time (each with probability 0.3, noise of
+/// sigma 1, a tenth of the weight range) keeps networks where their other inputs count.
 struct Settings {
   int population = 100;
   int evaluations = 10;

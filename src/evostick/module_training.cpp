@@ -1,6 +1,5 @@
 #include "evostick/module_training.hpp"
 
-#include <memory>
 #include <stdexcept>
 
 #include "evaluation/simulation.hpp"
@@ -51,20 +50,12 @@ MeasureEvaluator::MeasureEvaluator(Measure measure, int threads)
     : measure_(measure), threads_(ThreadedEvaluator(threads).threads()) {}
 
 void MeasureEvaluator::evaluate(const Mission& mission, std::span<const EvaluationTask> tasks, std::span<double> scores) {
-  // As ThreadedEvaluator: one simulation per worker, rebuilt when the software changes.
-  struct Cached {
-    const ControlSoftware* software = nullptr;
-    std::unique_ptr<Simulation> simulation;
-  };
-  std::vector<Cached> cache(static_cast<std::size_t>(threads_));
-  parallel_for(tasks.size(), threads_, [&](std::size_t i, int worker) {
-    Cached& c = cache[static_cast<std::size_t>(worker)];
-    if (c.software != tasks[i].software) {
-      c.simulation = std::make_unique<Simulation>(mission, *tasks[i].software);
-      c.software = tasks[i].software;
-    }
+  // A fresh simulation per run: building one costs far less than its 400 ticks, and a run's
+  // result does not depend on whether its Simulation was reused (evaluation/simulation.hpp).
+  parallel_for(tasks.size(), threads_, [&](std::size_t i, int) {
+    Simulation simulation(mission, *tasks[i].software);
     MeasureObserver observer(measure_, mission);
-    c.simulation->run(tasks[i].seed, &observer);
+    simulation.run(tasks[i].seed, &observer);
     scores[i] = observer.value();
   });
 }

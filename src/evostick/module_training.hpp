@@ -36,8 +36,8 @@ inline constexpr std::uint64_t kShippedSeed = 1;
 inline constexpr int kShippedGenerations = 20;
 Settings shipped_settings();
 
-/// Scores runs with a training measure instead of the mission's objective; runs on local
-/// threads through the same parallel_for as ThreadedEvaluator, scores by task index.
+/// Scores runs with a training measure instead of the mission's objective, on local threads
+/// through ThreadedEvaluator's parallel_for; scores by task index, like every Evaluator.
 class MeasureEvaluator : public Evaluator {
  public:
   MeasureEvaluator(Measure measure, int threads = 0);

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <functional>
 #include <map>
 #include <set>
 
@@ -75,6 +77,28 @@ TEST(EvoStick, EveryNetworkOfAGenerationRunsOnTheSameFreshSeeds) {
   EXPECT_EQ(all_seeds.size(), 12u) << "every generation draws new seeds";
 }
 
+TEST(EvoStick, GenerationOneIsTheSilentNetworkAndMutantsOfIt) {
+  ScriptedEvaluator evaluator(0.0);
+  Settings s = small(1);
+  s.population = 200;
+  evostick::evolve(Mission{}, Direction::Maximize, evaluator, s);
+  const auto& batch = evaluator.batches.front();
+  EXPECT_EQ(batch.front().weights, arlequin::Weights{}) << "network 0 is the silent network";
+  int mutated = 0, weights = 0;
+  for (std::size_t p = 1; p < 200; ++p) {
+    const auto& w = batch[p * 3].weights;
+    EXPECT_NE(w, arlequin::Weights{}) << p;
+    for (const double v : w) {
+      mutated += v != 0.0;
+      ++weights;
+      EXPECT_LE(std::abs(v), 5.0);
+    }
+  }
+  // Each weight gets noise with probability 0.3: 199 x 50 draws, 5 standard deviations.
+  const double p = s.mutation_probability, n = weights;
+  EXPECT_NEAR(mutated, n * p, 5.0 * std::sqrt(n * p * (1.0 - p)));
+}
+
 TEST(EvoStick, ElitesSurviveUnchangedAndChildrenAreMutatedElites) {
   ScriptedEvaluator evaluator(1.0);
   const Settings s = small(6);
@@ -122,7 +146,7 @@ TEST(EvoStick, ImprovesAScriptedObjectiveAndKeepsWeightsInBounds) {
   EXPECT_GT(result.history.back().population_mean, result.history.front().population_mean);
   int at_bound = 0;
   for (const double w : result.best) {
-    EXPECT_GT(w, 3.0) << "every weight has moved most of the way from the uniform start to the bound";
+    EXPECT_GT(w, 3.0) << "every weight has moved most of the way from the silent start to the bound";
     at_bound += w == 5.0;
   }
   EXPECT_GT(at_bound, 0) << "noise that crosses the bound is clipped to it, exactly";
@@ -131,11 +155,14 @@ TEST(EvoStick, ImprovesAScriptedObjectiveAndKeepsWeightsInBounds) {
 }
 
 TEST(EvoStick, MinimisingRanksTheOtherWay) {
-  ScriptedEvaluator up(0.0), down(0.0);
+  // Score -sum (w - 1)^2: maximising pulls the weights towards 1, minimising pushes them away.
+  ScriptedEvaluator up(1.0), down(1.0);
   const auto max = evostick::evolve(Mission{}, Direction::Maximize, up, small(15));
   const auto min = evostick::evolve(Mission{}, Direction::Minimize, down, small(15));
   EXPECT_GT(max.best_mean, max.history.front().best_mean);
   EXPECT_LT(min.best_mean, min.history.front().best_mean);
+  EXPECT_GT(max.best_mean, -50.0) << "better than the silent network";
+  EXPECT_LT(min.best_mean, -50.0) << "worse than the silent network";
 }
 
 TEST(EvoStick, SameSeedSameNetworkOtherSeedOtherNetwork) {
@@ -149,35 +176,28 @@ TEST(EvoStick, SameSeedSameNetworkOtherSeedOtherNetwork) {
 }
 
 TEST(EvoStick, SettingsAndBudgetsAreChecked) {
-  const auto message = [](Settings s) {
+  EXPECT_NO_THROW(Settings{}.validate());
+  const std::pair<std::function<void(Settings&)>, std::string> cases[] = {
+      {[](Settings& s) { s.elites = 100; }, "elites must be between 1 and population - 1 = 99"},
+      {[](Settings& s) { s.elites = 0; }, "elites must be between"},
+      {[](Settings& s) { s.population = 1; }, "population must be at least 2"},
+      {[](Settings& s) { s.mutation_sigma = 0.0; }, "mutation sigma must be a positive number"},
+      {[](Settings& s) { s.mutation_probability = 0.0; }, "mutation probability must be in (0, 1]"},
+      {[](Settings& s) { s.mutation_probability = 1.5; }, "mutation probability must be in (0, 1]"},
+      {[](Settings& s) { s.weight_bound = -1.0; }, "weight bound must be a positive number"},
+      {[](Settings& s) { s.evaluations = 0; }, "evaluations must be at least 1"},
+      {[](Settings& s) { s.generations = 0; }, "generations must be at least 1"},
+  };
+  for (const auto& [change, message] : cases) {
+    Settings s;
+    change(s);
     try {
       s.validate();
+      ADD_FAILURE() << "accepted; expected: " << message;
     } catch (const std::invalid_argument& e) {
-      return std::string(e.what());
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
     }
-    return std::string("valid");
-  };
-  Settings s;
-  EXPECT_EQ(message(s), "valid");
-  s.elites = 100;
-  EXPECT_NE(message(s).find("elites must be between 1 and population - 1 = 99"), std::string::npos);
-  s = Settings{};
-  s.population = 1;
-  EXPECT_NE(message(s).find("population"), std::string::npos);
-  s = Settings{};
-  s.mutation_sigma = 0.0;
-  EXPECT_NE(message(s).find("mutation sigma"), std::string::npos);
-  s = Settings{};
-  s.mutation_probability = 0.0;
-  EXPECT_NE(message(s).find("mutation probability must be in (0, 1]"), std::string::npos);
-  s.mutation_probability = 1.5;
-  EXPECT_NE(message(s).find("mutation probability"), std::string::npos);
-  s = Settings{};
-  s.evaluations = 0;
-  EXPECT_NE(message(s).find("evaluations"), std::string::npos);
-  s = Settings{};
-  s.generations = 0;
-  EXPECT_NE(message(s).find("generations"), std::string::npos);
+  }
 
   const Settings d;
   EXPECT_EQ(evostick::generations_for_budget(1000, d), 1);
