@@ -24,12 +24,12 @@ bool DesignSpaceFlags::any() const { return fsm || bt || chocolate || tuttifrutt
 
 void add_design_space_flags(CLI::App& command, DesignSpaceFlags& flags) {
   command.add_flag("--fsm", flags.fsm, "Design probabilistic finite-state machines");
-  command.add_flag("--bt", flags.bt, "Design behaviour trees (not available yet)");
+  command.add_flag("--bt", flags.bt, "Design behaviour trees (Maple topology); with --fsm too, the optimiser picks");
   command.add_flag("--chocolate", flags.chocolate, "Use the Chocolate modules");
-  command.add_flag("--tuttifrutti", flags.tuttifrutti, "Use the TuttiFrutti modules (not available yet)");
-  command.add_flag("--coconut", flags.coconut, "Use the Coconut modules (not available yet)");
-  command.add_flag("--maple", flags.maple, "Use the Maple modules (not available yet)");
-  command.add_flag("--arlequin", flags.arlequin, "Use the Arlequin modules (not available yet)");
+  command.add_flag("--tuttifrutti", flags.tuttifrutti, "Use the TuttiFrutti modules");
+  command.add_flag("--coconut", flags.coconut, "Use the Coconut modules");
+  command.add_flag("--maple", flags.maple, "Use the Maple modules");
+  command.add_flag("--arlequin", flags.arlequin, "Use the Arlequin modules");
 }
 
 std::uint64_t parse_seed(const std::string& text) {

@@ -57,15 +57,15 @@ TEST(design_IraceExport, ParameterFileText) {
 
 TEST(design_IraceExport, TargetRunnerPrintsTheNegatedScore) {
   const fs::path dir = fresh_dir("runner");
-  const fs::path stub = dir / "fake-swarmdesign";
+  const fs::path fake_runner = dir / "fake-swarmdesign";
   {
-    std::ofstream f(stub);
+    std::ofstream f(fake_runner);
     // Echoes its arguments to a file and prints a score like `swarmdesign evaluate`.
     f << "#!/bin/bash\necho \"$@\" > \"" << (dir / "args").string() << "\"\necho 'Simulating...' >&2\necho 'Score 12.5'\n";
   }
-  fs::permissions(stub, fs::perms::owner_all);
+  fs::permissions(fake_runner, fs::perms::owner_all);
   const ParameterSpace s = build_fsm_space(chocolate_fsm_modules());
-  write_irace_files(dir, s, {.max_experiments = 300, .seed = 4}, {"aac"}, {stub.string(), "aac", true});
+  write_irace_files(dir, s, {.max_experiments = 300, .seed = 4}, {"aac"}, {fake_runner.string(), "aac", true});
   const std::string out = run((dir / "target-runner").string() + " 7 1 12345 aac --fsm-config --nstates 1 --s0 11 2>&1");
   EXPECT_EQ(trim(out), "-12.5");
   std::ifstream args(dir / "args");
@@ -121,11 +121,11 @@ TEST(design_IraceExport, IraceReadsTheParametersAndItsSamplesParseBack) {
 TEST(design_IraceExport, IraceRunsThroughTheExportedFiles) {
   if (!have_rscript()) GTEST_SKIP() << "Rscript with irace not installed";
   const fs::path dir = fresh_dir("run");
-  const fs::path stub = dir / "fake-swarmdesign";
+  const fs::path fake_runner = dir / "fake-swarmdesign";
   {
     // Stands in for `swarmdesign evaluate`: the score is the number of states plus seed noise,
     // so a maximising design must end with 4 states.
-    std::ofstream f(stub);
+    std::ofstream f(fake_runner);
     f << "#!/bin/bash\n"
          "[ \"$1\" = evaluate ] && [ \"$2\" = --mission ] && [ \"$4\" = --seed ] || { echo bad call; exit 1; }\n"
          "shift 5\n"
@@ -133,12 +133,12 @@ TEST(design_IraceExport, IraceRunsThroughTheExportedFiles) {
          "while [ $# -gt 0 ]; do [ \"$1\" = --nstates ] && N=$2; shift; done\n"
          "echo \"Score $N.$((RANDOM % 10))\"\n";
   }
-  fs::permissions(stub, fs::perms::owner_all);
+  fs::permissions(fake_runner, fs::perms::owner_all);
   const ParameterSpace s = build_fsm_space(chocolate_fsm_modules());
   IraceScenarioSpec scenario{.max_experiments = 150, .seed = 3};
   scenario.nb_iterations = 2;
   scenario.min_nb_survival = 2;
-  write_irace_files(dir, s, scenario, {"aac"}, {stub.string(), "aac", true});
+  write_irace_files(dir, s, scenario, {"aac"}, {fake_runner.string(), "aac", true});
   const std::string out =
       run("cd " + dir.string() + " && Rscript -e 'irace::irace.cmdline(c(\"--scenario\", \"scenario.txt\"))' 2>&1");
   const auto at = out.find("# Best configurations as commandlines");
