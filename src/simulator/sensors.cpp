@@ -29,6 +29,15 @@ struct RayDirections {
 };
 const RayDirections kRays;
 
+/// The ray k (counter-clockwise) such that a direction `v` in the robot's frame lies between
+/// rays k and k + 1 (mod 8), found without trigonometry: rotate by the first ray's angle and
+/// classify the octant.
+int bracketing_ray(Vec2 v) {
+  const double x = v.x * kRays.cos[0] + v.y * kRays.sin[0], y = v.y * kRays.cos[0] - v.x * kRays.sin[0];
+  if (y >= 0.0) return x >= 0.0 ? (y <= x ? 0 : 1) : (y >= -x ? 2 : 3);
+  return x < 0.0 ? (-y <= -x ? 4 : 5) : (-y >= x ? 6 : 7);
+}
+
 /// True if the segment a->b passes within `radius` of c.
 bool segment_hits_disc(Vec2 a, Vec2 b, Vec2 c, double radius) {
   if (c.x < std::min(a.x, b.x) - radius || c.x > std::max(a.x, b.x) + radius || c.y < std::min(a.y, b.y) - radius ||
@@ -60,7 +69,6 @@ void update_pairs(SwarmState& swarm, double neighbour_range) {
   for (RobotPair& pair : swarm.pairs) {
     pair.delta = swarm.position[pair.b] - swarm.position[pair.a];
     pair.distance_sq = pair.delta.squared_length();
-    swarm.distance_sq[pair.a * swarm.size + pair.b] = swarm.distance_sq[pair.b * swarm.size + pair.a] = pair.distance_sq;
     if (pair.distance_sq < range_sq) {
       swarm.neighbours[pair.a * stride + swarm.neighbour_count[pair.a]++] = {pair.b, pair.delta, pair.distance_sq};
       swarm.neighbours[pair.b * stride + swarm.neighbour_count[pair.b]++] = {pair.a, -pair.delta, pair.distance_sq};
@@ -83,17 +91,27 @@ void sense_proximity(const ArenaModel& arena, const RobotModel& model, SwarmStat
       any = true;
       const Vec2 c{h.x * nb.delta.x + h.y * nb.delta.y, h.x * nb.delta.y - h.y * nb.delta.x};
       const double base = nb.distance_sq - kRadius * kRadius + kRing * kRing;
-      for (int k = 0; k < 8; ++k) {
+      auto cast = [&](int k) {
         const double along = c.x * kRays.cos[k] + c.y * kRays.sin[k];
-        const double b = kRing - along;         // (origin - centre) . u
+        const double b = kRing - along;               // (origin - centre) . u
         const double q = base - 2.0 * kRing * along;  // |origin - centre|^2 - r^2
         if (q <= 0.0) {
           best[k] = 0.0;  // the sensor point is inside the other body
-          continue;
+          return;
         }
         const double disc = b * b - q;
-        if (disc < 0.0 || b > 0.0) continue;
+        if (disc < 0.0 || b > 0.0) return;
         best[k] = std::min(best[k], -b - std::sqrt(disc));
+      };
+      // Rays are radial, so a body seen from the centre under a half-angle below 45 degrees
+      // (any body further than r sqrt 2, i.e. every body that does not overlap) can only
+      // meet the two rays that bracket its bearing; the others would find no root.
+      if (nb.distance_sq > 2.0 * kRadius * kRadius) {
+        const int k = bracketing_ray(c);
+        cast(k);
+        cast((k + 1) & 7);
+      } else {
+        for (int k = 0; k < 8; ++k) cast(k);
       }
     }
     const Vec2 p = swarm.position[i];
@@ -181,7 +199,6 @@ void sense_ground(const ArenaModel& arena, const RobotModel& model, SwarmState& 
 }
 
 void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng) {
-  const int n = swarm.size;
   std::fill(swarm.rab_count.begin(), swarm.rab_count.end(), 0);
   const std::size_t stride = swarm.rab_stride();
   const double range_sq = model.rab_range * model.rab_range;
@@ -201,11 +218,13 @@ void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, S
     bool visible = arena.line_of_sight_walls(pa, pb);
     const double reach = std::sqrt(pair.distance_sq) + kRadius;
     const double reach_sq = reach * reach;
-    const double* from_a = &swarm.distance_sq[pair.a * n];
-    const double* from_b = &swarm.distance_sq[pair.b * n];
-    for (int k = 0; k < n && visible; ++k) {
-      if (from_a[k] >= reach_sq || from_b[k] >= reach_sq || k == pair.a || k == pair.b) continue;
-      if (segment_hits_disc(pa, pb, swarm.position[k], kRadius)) visible = false;
+    // Such a body is among a's neighbours (their range covers the RAB range plus a body).
+    for (const auto& nb : swarm.neighbours_of(pair.a)) {
+      if (!visible) break;
+      if (nb.distance_sq >= reach_sq || nb.other == pair.b) continue;
+      const Vec2 pk = swarm.position[nb.other];
+      if ((pk - pb).squared_length() >= reach_sq) continue;
+      if (segment_hits_disc(pa, pb, pk, kRadius)) visible = false;
     }
     if (!visible) continue;
     const double distance = std::sqrt(pair.distance_sq);
@@ -223,7 +242,7 @@ void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, S
 }
 
 double neighbour_range(const RobotModel& model) {
-  return std::max({model.rab_range, model.camera_range + std::abs(kRgbLedOffset),
+  return std::max({model.rab_range + kRadius, model.camera_range + std::abs(kRgbLedOffset),
                    epuck::kProximityRingRadius + epuck::kProximityRange + kRadius});
 }
 

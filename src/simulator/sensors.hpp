@@ -17,7 +17,8 @@ struct SensorSet {
 
 /// Refreshes the pair table and the neighbour lists (call after physics, before sensing).
 void update_pairs(SwarmState& swarm, double neighbour_range);
-/// Neighbour lists cover every sensor's reach: RAB, camera, proximity.
+/// Neighbour lists cover every sensor's reach: RAB (plus a body, for its line of sight), camera,
+/// proximity.
 double neighbour_range(const RobotModel& model);
 
 void sense_proximity(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng);

@@ -24,7 +24,6 @@ void SwarmState::resize(int robots, int arena_leds) {
   blobs.assign(n * static_cast<std::size_t>(blobs_per_robot), {});
   neighbours.assign(n * rab_stride(), {});
   neighbour_count.assign(n, 0);
-  distance_sq.assign(n * n, 0.0);
   pairs.clear();
   pairs.reserve(n * (n - 1) / 2);
   for (std::size_t a = 0; a < n; ++a)

@@ -69,7 +69,6 @@ struct SwarmState {
     double distance_sq;
   };
   std::vector<Neighbour> neighbours;
-  std::vector<double> distance_sq;             // size x size, refreshed with the pairs
   std::vector<std::uint16_t> neighbour_count;
   std::span<const Neighbour> neighbours_of(int robot) const {
     return {neighbours.data() + static_cast<std::size_t>(robot) * rab_stride(), neighbour_count[static_cast<std::size_t>(robot)]};
