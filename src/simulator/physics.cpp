@@ -13,7 +13,7 @@ constexpr double kDt = epuck::kSubstepSeconds;
 constexpr double kMaxDeltaV = epuck::kMaxDriveForce / epuck::kMass * kDt;  // per sub-step
 constexpr double kRobotFriction = 0.7 * 0.7;
 constexpr double kWallFriction = 0.7 * 0.1;
-constexpr int kSolverSweeps = 6;
+constexpr int kProjectionPasses = 4;
 }  // namespace
 
 void Physics::reset(int robots) {
@@ -29,10 +29,9 @@ void Physics::reset(int robots) {
     v->clear();
     v->reserve(n * (n - 1) / 2 + 8 * n);
   }
-  for (auto* v : {&pair_contacts_, &wall_contacts_}) {
-    v->clear();
-    v->reserve(n * (n - 1) / 2 + 8 * n);
-  }
+  close_pairs_.clear();
+  close_pairs_.reserve(n * (n - 1) / 2);
+  start_.assign(n, {});
 }
 
 void Physics::step(const ArenaModel& arena, SwarmState& swarm) {
@@ -98,15 +97,21 @@ void Physics::step(const ArenaModel& arena, SwarmState& swarm) {
   // positions the move starts from, so the move can never create an overlap.
   if (!contact_robots_.empty()) {
     for (int sub = 0; sub < epuck::kPhysicsSubsteps; ++sub) {
-      solve_contacts(arena, swarm, max_speed);
-      for (const std::uint16_t i : contact_robots_) swarm.position[i] += swarm.velocity[i] * kDt;
-      separate_overlaps(arena, swarm);
-      for (const std::uint16_t i : contact_robots_) accelerate(swarm.velocity[i], target_velocity_[i]);
+      for (const std::uint16_t i : contact_robots_) {
+        start_[i] = swarm.position[i];
+        swarm.position[i] += swarm.velocity[i] * kDt;
+      }
+      project_contacts(arena, swarm);
+      for (const std::uint16_t i : contact_robots_) {
+        swarm.velocity[i] = (swarm.position[i] - start_[i]) * (1.0 / kDt);
+        accelerate(swarm.velocity[i], target_velocity_[i]);
+      }
     }
   }
   for (int i = 0; i < n; ++i) {
     const double turn = (swarm.angular_velocity[i] + target_angular_[i] * (epuck::kPhysicsSubsteps - 1)) * kDt;
     swarm.angular_velocity[i] = target_angular_[i];  // the angular joint is stiff: one sub-step
+    if (turn == 0.0) continue;  // heading unchanged: no trigonometry
     swarm.yaw[i] = wrap_signed(swarm.yaw[i] + turn);
     swarm.heading[i] = {std::cos(swarm.yaw[i]), std::sin(swarm.yaw[i])};
   }
@@ -142,99 +147,53 @@ void Physics::move_freely(SwarmState& swarm, int i) {
   }
 }
 
-void Physics::solve_contacts(const ArenaModel& arena, SwarmState& swarm, double max_speed) {
-  // Speculative constraints: the approach speed along the normal may close the current gap
-  // within this sub-step but never more; an existing overlap may only shrink. Contacts too
-  // far apart to close within the sub-step are left out.
-  const double closing = 2.0 * (max_speed + 2.0 * kMaxDeltaV) * kDt + 1e-9;
-  pair_contacts_.clear();
-  for (const Candidate& c : pair_candidates_) {
-    const Vec2 d = swarm.position[c.b] - swarm.position[c.a];
-    const double limit = 2.0 * kRadius + closing;
-    const double dist2 = d.squared_length();
-    if (dist2 >= limit * limit || dist2 <= 0.0) continue;
-    const double dist = std::sqrt(dist2);
-    const double gap = dist - 2.0 * kRadius;
-    pair_contacts_.push_back({c.a, c.b, d * (1.0 / dist), gap > 0.0 ? -gap / kDt : 0.0, 0.0, 0.0});
-  }
-  wall_contacts_.clear();
-  for (const Candidate& c : wall_candidates_) {
-    Vec2 normal;
-    const double gap = arena.walls[c.b].distance(swarm.position[c.a], &normal) - kRadius;
-    if (gap >= closing) continue;
-    wall_contacts_.push_back({c.a, c.b, normal, gap > 0.0 ? -gap / kDt : 0.0, 0.0, 0.0});
-  }
-  if (pair_contacts_.empty() && wall_contacts_.empty()) return;
-
-  auto still = [&](std::uint16_t i) { return swarm.velocity[i].x == 0.0 && swarm.velocity[i].y == 0.0; };
-  for (int sweep = 0; sweep < kSolverSweeps; ++sweep) {
-    double largest = 0.0;
-    for (Contact& c : pair_contacts_) {
-      // Two motionless bodies with no impulse yet: nothing to correct (allowed <= 0).
-      if (c.normal_impulse == 0.0 && still(c.a) && still(c.b)) continue;
-      Vec2& va = swarm.velocity[c.a];
-      Vec2& vb = swarm.velocity[c.b];
-      const double vn = dot(vb - va, c.normal);
-      // Equal masses: each body takes half of the relative correction.
-      const double accumulated = std::max(c.normal_impulse + 0.5 * (c.allowed - vn), 0.0);
-      const double jn = accumulated - c.normal_impulse;
-      c.normal_impulse = accumulated;
-      va -= c.normal * jn;
-      vb += c.normal * jn;
-      largest = std::max(largest, std::abs(jn));
-      if (c.normal_impulse <= 0.0) continue;
-      const Vec2 tangent{-c.normal.y, c.normal.x};
-      const double vt = dot(vb - va, tangent);
-      const double limit = kRobotFriction * c.normal_impulse;
-      const double accumulated_t = std::clamp(c.tangent_impulse - 0.5 * vt, -limit, limit);
-      const double jt = accumulated_t - c.tangent_impulse;
-      c.tangent_impulse = accumulated_t;
-      va -= tangent * jt;
-      vb += tangent * jt;
-    }
-    for (Contact& c : wall_contacts_) {
-      Vec2& v = swarm.velocity[c.a];
-      const double vn = dot(v, c.normal);
-      const double accumulated = std::max(c.normal_impulse + (c.allowed - vn), 0.0);
-      const double jn = accumulated - c.normal_impulse;
-      c.normal_impulse = accumulated;
-      v += c.normal * jn;
-      largest = std::max(largest, std::abs(jn));
-      if (c.normal_impulse <= 0.0) continue;
-      const Vec2 tangent{-c.normal.y, c.normal.x};
-      const double vt = dot(v, tangent);
-      const double limit = kWallFriction * c.normal_impulse;
-      const double accumulated_t = std::clamp(c.tangent_impulse - vt, -limit, limit);
-      v += tangent * (accumulated_t - c.tangent_impulse);
-      c.tangent_impulse = accumulated_t;
-    }
-    if (largest < 1e-6) break;  // converged to a micrometre per second
-  }
-}
-
-void Physics::separate_overlaps(const ArenaModel& arena, SwarmState& swarm) {
-  // In a dense crowd a few solver sweeps may leave a residual approach speed; remove the
-  // resulting overlap at once so that it can never accumulate. A push can create an
-  // overlap further along a chain or against a wall, hence a few passes; walls come last in
-  // each pass, so no robot ever ends inside a wall.
-  for (int pass = 0; pass < 4; ++pass) {
-    bool moved = false;
-    for (const Candidate& c : pair_candidates_) {
-      const Vec2 d = swarm.position[c.b] - swarm.position[c.a];
+void Physics::project_contacts(const ArenaModel& arena, SwarmState& swarm) {
+  // Bodies are moved first, then pushed out of each other: each of two robots takes half of
+  // their overlap along the normal, and up to friction x overlap of their relative sliding
+  // in this sub-step is cancelled (Coulomb's law, with overlap standing for the normal
+  // impulse). A push can create an overlap further along a chain or against a wall, hence
+  // a few passes; later passes only revisit pairs that were close in the first, since a
+  // push moves a body by well under a millimetre. Walls come last in each pass, so no robot
+  // ever ends inside a wall.
+  constexpr double kTouchSq = 4.0 * kRadius * kRadius;
+  constexpr double kCloseSq = (2.0 * kRadius + 1e-3) * (2.0 * kRadius + 1e-3);
+  constexpr double kNegligible = 1e-12;  // metres of overlap not worth another pass
+  close_pairs_.clear();
+  const std::vector<Candidate>* pairs = &pair_candidates_;
+  for (int pass = 0; pass < kProjectionPasses; ++pass) {
+    bool pushed = false;
+    for (const Candidate& c : *pairs) {
+      Vec2& pa = swarm.position[c.a];
+      Vec2& pb = swarm.position[c.b];
+      const Vec2 d = pb - pa;
       const double dist2 = d.squared_length();
-      if (dist2 >= 4.0 * kRadius * kRadius || dist2 <= 0.0) continue;
+      if (pass == 0 && dist2 < kCloseSq) close_pairs_.push_back(c);
+      if (dist2 >= kTouchSq || dist2 <= 0.0) continue;
       const double dist = std::sqrt(dist2);
-      const Vec2 push = d * (0.5 * (2.0 * kRadius - dist) / dist);
-      swarm.position[c.a] -= push;
-      swarm.position[c.b] += push;
-      moved = true;
+      const double depth = 2.0 * kRadius - dist;
+      if (depth < kNegligible) continue;
+      const Vec2 normal = d * (1.0 / dist);
+      const Vec2 tangent{-normal.y, normal.x};
+      const double slide = dot((pb - start_[c.b]) - (pa - start_[c.a]), tangent);
+      const double grip = kRobotFriction * depth;
+      const double stick = std::clamp(slide, -grip, grip);
+      const Vec2 push = normal * (0.5 * depth) - tangent * (0.5 * stick);
+      pa -= push;
+      pb += push;
+      pushed = true;
     }
     for (const Candidate& c : wall_candidates_) {
       Vec2 normal;
-      const double gap = arena.walls[c.b].distance(swarm.position[c.a], &normal) - kRadius;
-      if (gap < 0.0) swarm.position[c.a] -= normal * gap;
+      Vec2& p = swarm.position[c.a];
+      const double gap = arena.walls[c.b].distance(p, &normal) - kRadius;
+      if (gap >= 0.0) continue;
+      p -= normal * gap;
+      const Vec2 tangent{-normal.y, normal.x};
+      const double grip = kWallFriction * -gap;
+      p -= tangent * std::clamp(dot(p - start_[c.a], tangent), -grip, grip);
     }
-    if (!moved) break;
+    if (!pushed) break;
+    pairs = &close_pairs_;
   }
 }
 

@@ -9,13 +9,16 @@
 // 0.4 kg body (so a robot needs ~3 sub-steps to reach 12 cm/s and slides a little when it
 // turns); inelastic contacts with Coulomb friction 0.49 robot-robot and 0.07 robot-wall.
 //
-// What we simplify, and why: contacts are solved as speculative velocity constraints
-// (sequential impulses on linear velocity only) instead of Chipmunk's post-penetration
-// arbiters. Robots then touch at exactly 2r where dynamics2d lets them sink a few tenths of
-// a millimetre, and overlap can never grow. The drive's angular joint is treated as
-// infinitely stiff (its limit, 1530 rad/s^2, is reached within one sub-step at e-puck
-// speeds) and friction torque is ignored, which only matters for a robot spinning while it
-// touches another.
+// What we simplify, and why: contacts are resolved on positions (position-based dynamics)
+// instead of Chipmunk's velocity arbiters. In each sub-step the robots in contact move, are
+// pushed out of each other (half each, equal masses) with Coulomb friction bounding the
+// cancelled sliding, and their velocity becomes the displacement over the sub-step, so a
+// robot pushing another moves at half speed just as the impulse solution makes it. Robots
+// thus touch at 2r where dynamics2d lets them sink a few tenths of a millimetre, overlap
+// never grows, and one pass over the contacts costs a fraction of an iterative impulse
+// solver. The drive's angular joint is treated as infinitely stiff (its limit, 1530
+// rad/s^2, is reached within one sub-step at e-puck speeds) and friction torque is
+// ignored, which only matters for a robot spinning while it touches another.
 #include <vector>
 
 #include "simulator/arena.hpp"
@@ -33,18 +36,10 @@ class Physics {
   struct Candidate {
     std::uint16_t a, b;  // robots, or robot and wall
   };
-  /// A contact that may act during this sub-step; geometry is fixed while velocities are solved.
-  struct Contact {
-    std::uint16_t a, b;
-    Vec2 normal;           // robot pair: from a to b; wall: from the wall to robot a
-    double allowed;        // lowest admissible normal velocity (closing the gap, not more)
-    double normal_impulse, tangent_impulse;
-  };
-  void solve_contacts(const ArenaModel& arena, SwarmState& swarm, double max_speed);
+  void project_contacts(const ArenaModel& arena, SwarmState& swarm);
   std::uint16_t find_island(std::uint16_t robot);
   static void accelerate(Vec2& velocity, Vec2 target);
   void move_freely(SwarmState& swarm, int robot);
-  void separate_overlaps(const ArenaModel& arena, SwarmState& swarm);
 
   std::vector<Vec2> target_velocity_;
   std::vector<double> target_angular_;
@@ -52,7 +47,8 @@ class Physics {
   std::vector<std::uint8_t> moving_, in_contact_;
   std::vector<std::uint16_t> contact_robots_;
   std::vector<Candidate> pair_candidates_, wall_candidates_;
-  std::vector<Contact> pair_contacts_, wall_contacts_;
+  std::vector<Candidate> close_pairs_;        // pairs within a millimetre of touching
+  std::vector<Vec2> start_;                   // positions at the start of the sub-step
 };
 
 }  // namespace sd
