@@ -8,6 +8,7 @@ packages=(
   build-essential cmake ninja-build pkg-config git
   libcli11-dev nlohmann-json3-dev libsqlite3-dev libsodium-dev libboost-dev r-cran-irace
   libgtest-dev libgmock-dev libbenchmark-dev
+  jq  # bench/native_vs_irace.sh
 )
 
 missing=()

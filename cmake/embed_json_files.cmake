@@ -2,7 +2,8 @@
 # string, so the binary needs no data files at run time. The table it defines is
 #   std::span<const TYPE> FUNCTION()  in namespace NAMESPACE, declared in HEADER,
 # with TYPE = {std::string_view name (file name without .json), std::string_view json}.
-# Same scheme as src/missions/embed_missions.cmake.
+# Used for the mission catalogue (src/missions), the Arlequin weights (src/modules) and
+# EvoStick's training arenas (src/evostick).
 file(GLOB json_files ${DIR}/*.json)
 list(SORT json_files)
 set(body "// Generated from ${DIR}/*.json by embed_json_files.cmake; do not edit.\n#include \"${HEADER}\"\n\nnamespace ${NAMESPACE} {\nnamespace {\n")
