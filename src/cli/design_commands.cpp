@@ -92,6 +92,9 @@ void run_irace_export(const ExportOptions& o) {
 
   design::IraceScenarioSpec scenario;
   scenario.max_experiments = parse_budget(o.budget);
+  // irace 3.5 refuses a budget below this minimum (computeMinimumBudget, which counts the
+  // scenario's nbIterations): say so now rather than write files irace will not run.
+  require_minimum_budget(scenario.max_experiments, space, o.iterations);
   scenario.seed = o.seed.empty() ? 0 : parse_seed(o.seed);
   scenario.digits = space.digits();
   scenario.nb_iterations = o.iterations;
@@ -112,7 +115,8 @@ void register_irace_export(CLI::App& app) {
   add_design_space_flags(*cmd, o->flags);
   cmd->add_option("--out", o->out, "Folder to write parameters.txt, scenario.txt, instances.txt, target-runner")
       ->required();
-  cmd->add_option("--budget", o->budget, "maxExperiments of the scenario (default 5000)");
+  cmd->add_option("--budget", o->budget,
+                  "maxExperiments of the scenario (default 5000); at least irace's minimum for the design space");
   cmd->add_option("--seed", o->seed, "irace's seed (default: irace picks one)");
   cmd->add_option("--iterations", o->iterations, "nbIterations of the scenario (default: irace's own)")
       ->check(CLI::PositiveNumber);

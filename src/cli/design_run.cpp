@@ -52,9 +52,17 @@ std::string mission_reference(const std::string& mission) {
   return is_path ? std::filesystem::absolute(mission).lexically_normal().string() : mission;
 }
 
-long long minimum_design_budget(const design::ParameterSpace& space) {
+long long minimum_design_budget(const design::ParameterSpace& space, int nb_iterations) {
   const int n = design::default_nb_iterations(space.nb_variable());
-  return design::minimum_budget(engine_options(1, 0), n, n);
+  return design::minimum_budget(engine_options(1, 0), n, nb_iterations > 0 ? nb_iterations : n);
+}
+
+void require_minimum_budget(long long budget, const design::ParameterSpace& space, int nb_iterations) {
+  const long long minimum = minimum_design_budget(space, nb_iterations);
+  if (budget < minimum)
+    throw UsageError("a budget of " + std::to_string(budget) + " simulation runs is below the minimum of " +
+                     std::to_string(minimum) + " that Iterated F-Race needs for this design space" +
+                     (nb_iterations > 0 ? " with " + std::to_string(nb_iterations) + " iterations" : ""));
 }
 
 PreparedDesign check_new_design(const NewDesignSettings& settings) {
@@ -71,10 +79,7 @@ PreparedDesign check_new_design(const NewDesignSettings& settings) {
     throw UsageError(e.what());
   }
   d.space = std::make_unique<design::ParameterSpace>(design::build_design_space(d.choice));
-  const long long minimum = minimum_design_budget(*d.space);
-  if (settings.budget < minimum)
-    throw UsageError("a budget of " + std::to_string(settings.budget) + " simulation runs is below the minimum of " +
-                     std::to_string(minimum) + " that Iterated F-Race needs for this design space");
+  require_minimum_budget(settings.budget, *d.space);
   d.options = engine_options(settings.budget, settings.seed);
   return d;
 }

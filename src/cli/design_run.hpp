@@ -87,8 +87,12 @@ DesignReport run_prepared_design(PreparedDesign& design, const RunOptions& optio
 /// (so that the design resumes, and target-runner runs, from any directory).
 std::string mission_reference(const std::string& mission);
 
-/// The smallest budget the engine accepts for this space (irace's minimum).
-long long minimum_design_budget(const design::ParameterSpace& space);
+/// The smallest budget the engine accepts for this space (irace's minimum). nb_iterations 0
+/// means the default floor(2 + log2 N_param), as both the engine and irace pick it.
+long long minimum_design_budget(const design::ParameterSpace& space, int nb_iterations = 0);
+/// UsageError naming the minimum when `budget` is below it: `design`, `run-design` and
+/// `irace-export` refuse a too small budget with the same words.
+void require_minimum_budget(long long budget, const design::ParameterSpace& space, int nb_iterations = 0);
 
 /// Text for people, or one JSON document.
 void print_design_report(const DesignReport& report, bool json);

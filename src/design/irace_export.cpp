@@ -147,8 +147,12 @@ std::string target_runner_text(const TargetRunnerSpec& s) {
        "if [ $# -lt 5 ]; then echo \"usage: $0 <configID> <instanceID> <seed> <instance> <configuration...>\"; exit 2; fi\n"
        "SEED=\"$3\"\n"
        "shift 4\n"
-       "EXE=\"${SWARMDESIGN:-"
-    << s.executable << "}\"\n"
+       // The default is assigned single-quoted on its own line and only then used as
+       // $DEFAULT_EXE: pasted into ${SWARMDESIGN:-...} a path with }, ", $, ` or \ would be
+       // cut short or expanded by the shell.
+       "DEFAULT_EXE="
+    << shell_quoted(s.executable) << "\n"
+    << "EXE=\"${SWARMDESIGN:-$DEFAULT_EXE}\"\n"
     << "MISSION=" << shell_quoted(s.mission) << "\n"
     << "if ! OUTPUT=$(\"$EXE\" evaluate --mission \"$MISSION\" --seed \"$SEED\" \"$@\" 2>&1); then\n"
        "  echo \"swarmdesign evaluate failed: $OUTPUT\"\n"

@@ -1,10 +1,37 @@
 #include "storage/sqlite.hpp"
 
+#include <algorithm>
+#include <chrono>
+#include <thread>
+
 namespace sd::storage {
 
 namespace {
+// How long a statement waits for another connection's lock before "database is locked".
+constexpr int kBusyTimeoutMilliseconds = 10000;
+
 [[noreturn]] void fail(sqlite3* db, const std::string& what) {
   throw DatabaseError(what + ": " + (db ? sqlite3_errmsg(db) : "out of memory"));
+}
+
+// A new database file is in rollback-journal mode until someone switches it to WAL (the
+// mode is then stored in the file, and later switches are no-ops that write nothing). The
+// switch reads the header under a shared lock, then upgrades to a write lock to rewrite it;
+// SQLite never calls the busy handler for such an upgrade (two upgraders would deadlock),
+// so when several processes open a fresh home at once, all but one get SQLITE_BUSY at once,
+// whatever the busy timeout. The statement has ended then, its shared lock is gone: wait a
+// little and retry, within the same timeout as every other statement.
+void switch_to_wal(sqlite3* db) {
+  using Clock = std::chrono::steady_clock;
+  const auto deadline = Clock::now() + std::chrono::milliseconds(kBusyTimeoutMilliseconds);
+  auto pause = std::chrono::milliseconds(1);
+  while (true) {
+    const int rc = sqlite3_exec(db, "PRAGMA journal_mode = WAL", nullptr, nullptr, nullptr);
+    if (rc == SQLITE_OK) return;
+    if ((rc & 0xff) != SQLITE_BUSY || Clock::now() >= deadline) fail(db, "database error");
+    std::this_thread::sleep_for(pause);
+    pause = std::min(pause * 2, std::chrono::milliseconds(50));
+  }
 }
 }  // namespace
 
@@ -17,10 +44,16 @@ Database::Database(const std::filesystem::path& path, bool create) : path_(path)
     db_ = nullptr;
     throw DatabaseError(message + ": " + detail);
   }
-  sqlite3_busy_timeout(db_, 10000);
-  execute("PRAGMA foreign_keys = ON");
-  execute("PRAGMA journal_mode = WAL");
-  execute("PRAGMA synchronous = NORMAL");
+  try {
+    sqlite3_busy_timeout(db_, kBusyTimeoutMilliseconds);
+    execute("PRAGMA foreign_keys = ON");
+    switch_to_wal(db_);
+    execute("PRAGMA synchronous = NORMAL");
+  } catch (...) {
+    sqlite3_close_v2(db_);  // the destructor does not run for a constructor that throws
+    db_ = nullptr;
+    throw;
+  }
 }
 
 Database::~Database() { sqlite3_close_v2(db_); }

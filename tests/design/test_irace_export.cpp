@@ -78,6 +78,43 @@ TEST(design_IraceExport, TargetRunnerPrintsTheNegatedScore) {
   fs::remove_all(dir);
 }
 
+TEST(design_IraceExport, TargetRunnerWorksForAnyExecutablePath) {
+  // Every character the shell treats specially inside "${VAR:-default}" or in quotes. A path
+  // pasted there unescaped was cut at the } (a binary under /tmp/x}y/ was looked for as
+  // /tmp/xy/swarmdesign}) and would have run the $(...) below.
+  const fs::path dir = fresh_dir("odd_path");
+  const fs::path odd = dir / "x}y \"z\" $HOME $(touch pwned) `touch pwned2` back\\slash 'q' {a,b} *";
+  fs::create_directories(odd);
+  const fs::path fake = odd / "swarmdesign";
+  {
+    std::ofstream f(fake);
+    f << "#!/bin/bash\necho \"$@\" > \"$(dirname \"$0\")/args\"\necho 'Score 3'\n";
+  }
+  fs::permissions(fake, fs::perms::owner_all);
+  const ParameterSpace s = build_fsm_space(chocolate_fsm_modules());
+  write_irace_files(dir, s, {.max_experiments = 300}, {"aac"}, {fake.string(), "aac", true});
+  const std::string call = "cd " + dir.string() + " && env -u SWARMDESIGN ./target-runner 7 1 99 aac --fsm-config --nstates 1 2>&1";
+  EXPECT_EQ(trim(run(call)), "-3");
+  std::ifstream args(odd / "args");
+  std::string line;
+  std::getline(args, line);
+  EXPECT_EQ(line, "evaluate --mission aac --seed 99 --fsm-config --nstates 1");
+  EXPECT_FALSE(fs::exists(dir / "pwned"));
+  EXPECT_FALSE(fs::exists(dir / "pwned2"));
+
+  // $SWARMDESIGN still overrides the default.
+  const fs::path other = dir / "other-swarmdesign";
+  {
+    std::ofstream f(other);
+    f << "#!/bin/bash\necho 'Score 5'\n";
+  }
+  fs::permissions(other, fs::perms::owner_all);
+  EXPECT_EQ(trim(run("cd " + dir.string() + " && SWARMDESIGN=" + other.string() +
+                     " ./target-runner 7 1 99 aac --fsm-config --nstates 1 2>&1")),
+            "-5");
+  fs::remove_all(dir);
+}
+
 TEST(design_IraceExport, IraceReadsTheParametersAndItsSamplesParseBack) {
   if (!have_rscript()) GTEST_SKIP() << "Rscript with irace not installed";
   const ParameterSpace s = build_fsm_space(chocolate_fsm_modules());

@@ -2,8 +2,11 @@
 // the first-run migration happens once, and a contested user name goes to exactly one.
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <thread>
 
+#include "storage/sqlite.hpp"
 #include "workflow/workflow_fixture.hpp"
 
 namespace sd::test {
@@ -29,6 +32,31 @@ TEST_F(workflow_concurrency, SimultaneousSignUpsOnAFreshHomeAllSucceed) {
                                      "correct horse battery\n", environment());
   for (const auto& outcome : outcomes) EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
   EXPECT_EQ(query("SELECT count(*) FROM users"), "4");
+}
+
+// The deterministic core of the test above. A new database file is in rollback-journal mode
+// until its first opener switches it to WAL, and that switch turns a read lock into a write
+// lock: SQLite then returns "database is locked" at once instead of calling the busy
+// handler. Opening must wait for the other writer like any other statement does.
+TEST_F(workflow_concurrency, OpeningAFreshDatabaseWaitsForAWriterInsteadOfFailing) {
+  const auto path = scratch() / "fresh.db";
+  sqlite3* writer = nullptr;
+  ASSERT_EQ(sqlite3_open(path.c_str(), &writer), SQLITE_OK);
+  ASSERT_EQ(sqlite3_exec(writer, "BEGIN IMMEDIATE", nullptr, nullptr, nullptr), SQLITE_OK);
+  std::atomic<bool> releasing = false;
+  std::thread release([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    releasing = true;  // before COMMIT: the opener cannot get the lock earlier than this
+    sqlite3_exec(writer, "COMMIT", nullptr, nullptr, nullptr);
+  });
+  EXPECT_NO_THROW(storage::Database opened(path));
+  EXPECT_TRUE(releasing) << "Database() returned before the writer let go of its lock";
+  release.join();
+  sqlite3_close(writer);
+  storage::Database reopened(path, false);
+  auto mode = reopened.prepare("PRAGMA journal_mode");
+  ASSERT_TRUE(mode.step());
+  EXPECT_EQ(mode.text(0), "wal");
 }
 
 TEST_F(workflow_concurrency, AContestedUserNameGoesToExactlyOneSignUp) {

@@ -48,6 +48,34 @@ TEST_F(irace_export, WritesTheFourFilesAndRefusesBadFlags) {
   expect_error(run({"irace-export", "--mission", "aac", "--budget", "0", "--out", dir.string()}), 2, "positive integer");
 }
 
+// irace 3.5 refuses maxExperiments below its computeMinimumBudget (1008 for FSM+Chocolate,
+// 126 with nbIterations = 2): the export says so in design's words and writes nothing.
+TEST_F(irace_export, RefusesABudgetBelowIracesMinimumLikeDesignDoes) {
+  const auto dir = scratch() / "export";
+  const auto exported = run({"irace-export", "--mission", "aac", "--fsm", "--chocolate", "--budget", "300", "--out",
+                             dir.string()});
+  expect_error(exported, 2, "a budget of 300 simulation runs is below the minimum of 1008");
+  EXPECT_FALSE(std::filesystem::exists(dir));
+  const auto designed = run({"design", "--mission", "aac", "--fsm", "--chocolate", "--budget", "300", "--out",
+                             (scratch() / "design").string()});
+  EXPECT_EQ(exported.err, designed.err);
+
+  expect_error(run({"irace-export", "--mission", "aac", "--fsm", "--chocolate", "--budget", "1007", "--out",
+                    dir.string()}),
+               2, "below the minimum of 1008");
+  EXPECT_FALSE(std::filesystem::exists(dir));
+  run_ok({"irace-export", "--mission", "aac", "--fsm", "--chocolate", "--budget", "1008", "--out", dir.string()});
+
+  // The minimum counts the iterations written into the scenario, as irace does.
+  const auto two = scratch() / "two-iterations";
+  expect_error(run({"irace-export", "--mission", "aac", "--fsm", "--chocolate", "--budget", "125", "--iterations", "2",
+                    "--out", two.string()}),
+               2, "below the minimum of 126 that Iterated F-Race needs for this design space with 2 iterations");
+  EXPECT_FALSE(std::filesystem::exists(two));
+  run_ok({"irace-export", "--mission", "aac", "--fsm", "--chocolate", "--budget", "126", "--iterations", "2", "--out",
+          two.string()});
+}
+
 TEST_F(irace_export, TheRealIraceFindsControlSoftwareThroughTheExport) {
   if (!have_irace()) GTEST_SKIP() << "Rscript with the irace package is not installed";
   const auto mission = write_short_mission(scratch(), 5);
