@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "modules/catalogue.hpp"
 #include "modules/conditions.hpp"
 
 namespace sd {
@@ -16,6 +17,19 @@ SwarmController::SwarmController(const ControlSoftware& software, int robots)
   entering_.resize(n);
   running_.resize(n * static_cast<std::size_t>(slots_));
   memory_.resize(n * static_cast<std::size_t>(slots_));
+  all_inputs_ = software.inputs();
+  if (software.architecture == Architecture::Fsm) {
+    for (const FsmState& state : software.fsm.states) {
+      const ModuleSpec* behaviour = find_module(ModuleKind::Behaviour, state.behaviour.id);
+      std::uint8_t bits = behaviour ? behaviour->inputs : all_inputs_;
+      behaviour_inputs_.push_back(bits);
+      for (const FsmTransition& t : state.transitions) {
+        const ModuleSpec* condition = find_module(ModuleKind::Condition, t.condition.id);
+        bits |= condition ? condition->inputs : all_inputs_;
+      }
+      state_inputs_.push_back(bits);
+    }
+  }
   reset();
 }
 

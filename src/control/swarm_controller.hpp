@@ -24,6 +24,15 @@ class SwarmController {
   /// One control step of robot `robot`.
   Actuation step(int robot, const ReferenceModel& rm, Rng& rng);
 
+  /// The inputs (Input bits) the robot reads at its next control step. FSM: its state's
+  /// behaviour, plus the conditions of its outgoing transitions unless it has just entered
+  /// the state (no condition is checked then). Trees and networks: all their inputs.
+  std::uint8_t inputs_of_next_step(int robot) const {
+    if (software_->architecture != Architecture::Fsm) return all_inputs_;
+    const auto r = static_cast<std::size_t>(robot);
+    const auto state = static_cast<std::size_t>(current_[r]);
+    return entering_[r] ? behaviour_inputs_[state] : state_inputs_[state];
+  }
   /// FSM: the robot's current state; behaviour tree: the action that ran last (-1: none).
   int current_state(int robot) const { return current_[static_cast<std::size_t>(robot)]; }
 
@@ -46,6 +55,8 @@ class SwarmController {
   std::vector<std::uint8_t> entering_;    // FSM: entering the current state
   std::vector<std::uint8_t> running_;     // tree: remembered child of * nodes, robots x nodes
   std::vector<BehaviourMemory> memory_;   // robots x slots
+  std::uint8_t all_inputs_;
+  std::vector<std::uint8_t> behaviour_inputs_, state_inputs_;  // FSM, per state
 };
 
 }  // namespace sd

@@ -81,6 +81,10 @@ void sense_proximity(const ArenaModel& arena, const RobotModel& model, SwarmStat
   constexpr double kReach = kRing + epuck::kProximityRange + kRadius;
   for (int i = 0; i < swarm.size; ++i) {
     std::array<double, 8>& reading = swarm.proximity[i];
+    if (!(swarm.demand[i] & SwarmState::kDemandProximity)) {
+      reading.fill(0.0);
+      continue;
+    }
     std::array<double, 8> best;
     best.fill(2.0 * epuck::kProximityRange);
     bool any = false;
@@ -139,6 +143,7 @@ void sense_light(const ArenaModel& arena, const RobotModel& model, SwarmState& s
   for (int i = 0; i < n; ++i) {
     std::array<double, 8>& reading = swarm.light[i];
     reading.fill(0.0);
+    if (!(swarm.demand[i] & SwarmState::kDemandLight)) continue;
     const Vec2 p = swarm.position[i];
     for (std::size_t l = 0; l < arena.lights.size(); ++l) {
       const Light& light = arena.lights[l];
@@ -253,6 +258,10 @@ void sense_camera(const ArenaModel& arena, const RobotModel& model, SwarmState& 
     const auto r = static_cast<std::size_t>(i);
     CameraBlob* out = swarm.blobs.data() + r * static_cast<std::size_t>(swarm.blobs_per_robot);
     std::uint16_t count = 0;
+    if (!(swarm.demand[r] & SwarmState::kDemandCamera)) {
+      swarm.blob_count[r] = 0;
+      continue;
+    }
     const Vec2 p = swarm.position[r], h = swarm.heading[r];
     const Vec3 camera{p.x, p.y, epuck::kCameraElevation};
     auto add = [&](std::uint32_t rgb, Vec2 offset) {

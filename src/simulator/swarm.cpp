@@ -13,6 +13,7 @@ void SwarmState::resize(int robots, int arena_leds) {
   wheel_left.assign(n, 0.0);
   wheel_right.assign(n, 0.0);
   led.assign(n, 0);
+  demand.assign(n, kDemandAll);
   proximity.assign(n, {});
   light.assign(n, {});
   ground.assign(n, {});

@@ -61,6 +61,14 @@ struct SwarmState {
 
   std::vector<RobotPair> pairs;                // all i < j
 
+  /// Per robot, which memoryless sensors its control software reads at the coming control
+  /// step (SensorDemand bits; all by default). Proximity, light and camera readings feed
+  /// nothing that outlives the step, so a robot that does not read them is not sensed for
+  /// them; ground and range-and-bearing feed the reference model's filter and buffer and
+  /// are sensed for every robot whenever the software uses them at all.
+  enum SensorDemand : std::uint8_t { kDemandProximity = 1, kDemandLight = 2, kDemandCamera = 4, kDemandAll = 7 };
+  std::vector<std::uint8_t> demand;
+
   /// Per robot, the other robots within kNeighbourRange this tick (built from the pairs):
   /// neighbours[i * (size - 1) + k], k < neighbour_count[i].
   struct Neighbour {
