@@ -223,9 +223,14 @@ void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, S
     bool visible = arena.line_of_sight_walls(pa, pb);
     const double reach = std::sqrt(pair.distance_sq) + kRadius;
     const double reach_sq = reach * reach;
-    // Such a body is among a's neighbours (their range covers the RAB range plus a body).
+    // Such a body is among a's neighbours (their range covers the RAB range plus a body),
+    // and first of all within r of the line through a and b (a cross product on the stored
+    // offsets, slightly loose so that rounding never hides a body the exact test would see).
+    const double line_limit = kRadius * kRadius * pair.distance_sq * (1.0 + 1e-9);
     for (const auto& nb : swarm.neighbours_of(pair.a)) {
       if (!visible) break;
+      const double cross = nb.delta.x * pair.delta.y - nb.delta.y * pair.delta.x;
+      if (cross * cross >= line_limit) continue;
       if (nb.distance_sq >= reach_sq || nb.other == pair.b) continue;
       const Vec2 pk = swarm.position[nb.other];
       if ((pk - pb).squared_length() >= reach_sq) continue;
