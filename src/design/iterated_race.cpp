@@ -198,9 +198,17 @@ std::vector<int> IteratedRace::sample_new(std::size_t n, const std::vector<int>&
   std::vector<SampledConfiguration> fresh;
   if (uniform) {
     for (auto& c : sample_uniform(space_, n, rng_, acceptable)) fresh.push_back({std::move(c), 0});
-  } else {
+  } else if (!options_.soft_restart) {
     fresh = sample_model(space_, s.elites, s.configurations, s.model, n, rng_, acceptable);
-    if (options_.soft_restart) {
+  } else {
+    // First draw as irace does, twins allowed: a new configuration equal to an elite or to
+    // another new one is exactly what irace's similarConfigurations detects, and the soft
+    // restart it triggers (the usual case in early iterations) must not be hidden by the
+    // redraw of twins. Without similar configurations there are no twins, so this draw is
+    // kept as it is; otherwise the draw after the restart redraws twins as usual.
+    const Acceptable not_rejected = [&](const Configuration& c) { return rejected.count(c.key()) == 0; };
+    fresh = sample_model(space_, s.elites, s.configurations, s.model, n, rng_, not_rejected);
+    {
       std::vector<ConfigRecord> race_set;
       for (int id : elite_ids) race_set.push_back(s.configurations[id]);
       int next = s.configurations.next_id();

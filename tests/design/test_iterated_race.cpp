@@ -2,6 +2,8 @@
 
 #include <atomic>
 #include <cmath>
+#include <set>
+#include <string>
 
 #include "design/fsm_space.hpp"
 #include "design/iterated_race.hpp"
@@ -229,4 +231,34 @@ TEST(design_IteratedRace, InitialConfigurationsAreRacedFirst) {
   EXPECT_EQ(design.state().configurations[1].config, o.initial_configurations[0]);
   EXPECT_EQ(design.state().all_elites.front().front(), 1);  // the optimum wins the first race
   EXPECT_EQ(r.elites.front().configuration.values[0], 2);
+}
+
+TEST(design_IteratedRace, TwinsTriggerTheSoftRestartButAreNotRaced) {
+  // 4 x 10 = 40 distinct configurations: sampling a few dozen from a peaked model gives twins
+  // (irace's similarConfigurations then triggers a soft restart), yet there are enough distinct
+  // configurations for the redraw of twins (unique_new_configurations) to avoid all of them.
+  // The soft restart must still happen, as in irace; the race of iteration 2 must still hold no
+  // twin (later, with a peaked model, the redraw may give up after 50 tries and keep one).
+  ParameterSpace s(2);
+  s.add({"C", "--c ", ParamType::Categorical, {"a", "b", "c", "d"}, {}, {}, false, {}});
+  s.add({"I", "--i ", ParamType::Integer, {}, Bound::fixed(1), Bound::fixed(10), false, {}});
+  s.finalize();
+  const auto cost = [](const Experiment& e) {
+    const auto& v = e.configuration->values;
+    sd::Rng noise(e.seed);
+    return (v[0] == 1 ? 0.0 : 1.0) + std::pow((v[1] - 7) / 9, 2) + 0.05 * noise.normal();
+  };
+  ThreadedRunner runner(cost, 1);
+  IteratedRace design(s, options(400, 4), runner);
+  int last_checked = 0;
+  while (design.advance()) {
+    const DesignState& st = design.state();
+    if (!st.race || st.iteration == last_checked || st.iteration != 2) continue;
+    last_checked = st.iteration;
+    std::set<std::string> keys;
+    for (int id : st.race->config_ids) EXPECT_TRUE(keys.insert(st.configurations[id].config.key()).second) << id;
+  }
+  const DesignState& st = design.state();
+  ASSERT_GE(st.soft_restarts.size(), 2u);
+  EXPECT_EQ(st.soft_restarts[1], 1);  // iteration 2
 }
