@@ -93,8 +93,8 @@ void Physics::step(const ArenaModel& arena, SwarmState& swarm) {
   // Chipmunk's order within a sub-step: move with the velocity of the previous sub-step,
   // then let the drive and the contacts set the next one. So the first sub-step of a tick
   // still moves with the last tick's velocity (a turn starting from straight motion covers
-  // 9/10 of omega dt, as in the ARGoS traces). Contacts are solved before each move, on the
-  // positions the move starts from, so the move can never create an overlap.
+  // 9/10 of omega dt, as in the ARGoS traces). Contacts are projected right after each
+  // move, and the velocity of the next sub-step is the displacement they allowed.
   if (!contact_robots_.empty()) {
     for (int sub = 0; sub < epuck::kPhysicsSubsteps; ++sub) {
       for (const std::uint16_t i : contact_robots_) {
