@@ -12,6 +12,7 @@
 
 #include "cli/command_registry.hpp"
 #include "cli/control_software_input.hpp"
+#include "cli/mission_input.hpp"
 #include "cli/score_report.hpp"
 #include "control/describe.hpp"
 #include "evaluation/evaluator.hpp"
@@ -21,9 +22,6 @@
 #include "missions/svg.hpp"
 
 namespace sd::cli {
-namespace {
-
-using nlohmann::json;
 
 Mission load_mission_or_usage(const std::string& name) {
   try {
@@ -32,6 +30,10 @@ Mission load_mission_or_usage(const std::string& name) {
     throw UsageError(e.what());
   }
 }
+
+namespace {
+
+using nlohmann::json;
 
 void register_missions(CLI::App& app) {
   auto* cmd = app.add_subcommand("missions", "List the missions (name, origin, robots, duration, objective direction)");

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "cli/command_registry.hpp"
+#include "cli/mission_input.hpp"
 #include "cli/design_flags.hpp"
 #include "cli/design_run.hpp"
 #include "design/irace_export.hpp"
@@ -75,12 +76,7 @@ struct ExportOptions {
 };
 
 void run_irace_export(const ExportOptions& o) {
-  Mission mission;
-  try {
-    mission = load_mission(o.mission);
-  } catch (const MissionError& e) {
-    throw UsageError(e.what());
-  }
+  const Mission mission = load_mission_or_usage(o.mission);
   design::DesignSpaceChoice choice;
   try {
     choice = design::resolve_design_space(o.flags.request());

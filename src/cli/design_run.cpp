@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command_registry.hpp"
+#include "cli/mission_input.hpp"
 #include "cli/progress_display.hpp"
 #include "cli/simulation_runner.hpp"
 #include "control/config_string.hpp"
@@ -67,11 +68,7 @@ void require_minimum_budget(long long budget, const design::ParameterSpace& spac
 
 PreparedDesign check_new_design(const NewDesignSettings& settings) {
   PreparedDesign d;
-  try {
-    d.mission = load_mission(settings.mission);
-  } catch (const MissionError& e) {
-    throw UsageError(e.what());
-  }
+  d.mission = load_mission_or_usage(settings.mission);
   d.mission_reference = mission_reference(settings.mission);
   try {
     d.choice = design::resolve_design_space(settings.space);

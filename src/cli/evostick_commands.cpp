@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "cli/command_registry.hpp"
+#include "cli/mission_input.hpp"
 #include "control/config_string.hpp"
 #include "evostick/evolution.hpp"
 #include "evostick/module_training.hpp"
@@ -93,12 +94,7 @@ void run_module(const Options& o) {
 }
 
 void run_mission(const Options& o) {
-  Mission mission;
-  try {
-    mission = load_mission(o.mission);
-  } catch (const MissionError& e) {
-    throw UsageError(e.what());
-  }
+  const Mission mission = load_mission_or_usage(o.mission);
   const bool progress_shown = isatty(STDERR_FILENO) && !o.json;
   ProgressLine line(progress_shown, o.settings.generations);
   ThreadedEvaluator evaluator(o.threads);
