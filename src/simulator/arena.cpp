@@ -150,6 +150,8 @@ void ArenaModel::compile() {
                                (static_cast<double>(c / grid_w_) + 0.5) * cell_size_};
   };
 
+  compile_floor_cells(lo, hi);
+
   near_ = build_lists(cells, walls.size(), [&](std::size_t c, std::size_t w) {
     return walls[w].distance(cell_center(c), nullptr) <= kWallReach + half_diagonal;
   });
@@ -166,6 +168,30 @@ void ArenaModel::compile() {
       return distance_to_segment(walls[w].center, p, p + (target - p) * t) <= half_diagonal + walls[w].bounding_radius();
     }));
   }
+}
+
+void ArenaModel::compile_floor_cells(Vec2 lo, Vec2 hi) {
+  for (const FloorPatch& patch : floor_patches) {
+    const auto [plo, phi] = patch.region.bounds();
+    lo = {std::min(lo.x, plo.x), std::min(lo.y, plo.y)};
+    hi = {std::max(hi.x, phi.x), std::max(hi.y, phi.y)};
+  }
+  const double cell = 1.0 / kFloorCellsPerMetre;
+  floor_origin_ = lo;
+  floor_w_ = static_cast<std::size_t>(std::ceil((hi.x - lo.x) * kFloorCellsPerMetre));
+  floor_h_ = static_cast<std::size_t>(std::ceil((hi.y - lo.y) * kFloorCellsPerMetre));
+  floor_cell_gray_.assign(floor_w_ * floor_h_, -1.0);
+  // A cell is uniform when every patch edge is further from its centre than its half-diagonal
+  // plus the sensors' reach: then each patch contains all of the neighbourhood or none of it,
+  // and the first match (hence the gray) is the same everywhere in it.
+  const double clearance = cell * std::sqrt(0.5) + kUniformFloorReach + 1e-9;
+  for (std::size_t cy = 0; cy < floor_h_; ++cy)
+    for (std::size_t cx = 0; cx < floor_w_; ++cx) {
+      const Vec2 c = floor_origin_ + Vec2{(static_cast<double>(cx) + 0.5) * cell, (static_cast<double>(cy) + 0.5) * cell};
+      const bool uniform = std::all_of(floor_patches.begin(), floor_patches.end(),
+                                       [&](const FloorPatch& patch) { return patch.region.boundary_distance(c) > clearance; });
+      if (uniform) floor_cell_gray_[cy * floor_w_ + cx] = floor_gray(c);
+    }
 }
 
 }  // namespace sd

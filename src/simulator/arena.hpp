@@ -80,6 +80,17 @@ class ArenaModel {
       if (patch.region.contains(p)) return patch.gray;
     return floor_background_gray;
   }
+  /// The floor's gray everywhere within kUniformFloorReach of p, or a negative value if the
+  /// floor may change within that distance (then ask floor_gray point by point). Most robots
+  /// are far from any patch edge, and this spares them a region test per ground sensor.
+  double uniform_floor_gray(Vec2 p) const {
+    const double fx = (p.x - floor_origin_.x) * kFloorCellsPerMetre, fy = (p.y - floor_origin_.y) * kFloorCellsPerMetre;
+    if (!(fx >= 0.0 && fy >= 0.0)) return -1.0;
+    const auto cx = static_cast<std::size_t>(fx), cy = static_cast<std::size_t>(fy);
+    if (cx >= floor_w_ || cy >= floor_h_) return -1.0;
+    return floor_cell_gray_[cy * floor_w_ + cx];
+  }
+  static constexpr double kUniformFloorReach = 0.032;  // m: the ground sensors are 3.13 cm from the centre
 
   /// Walls within kWallReach of p (contacts and proximity rays).
   std::span<const std::uint16_t> walls_near(Vec2 p) const {
@@ -113,6 +124,12 @@ class ArenaModel {
   std::vector<CellLists> shading_;
   std::vector<std::uint16_t> all_walls_;
   std::vector<std::uint16_t> interior_walls_;  // walls that can separate two robots
+
+  static constexpr double kFloorCellsPerMetre = 50.0;
+  Vec2 floor_origin_;
+  std::size_t floor_w_ = 0, floor_h_ = 0;
+  std::vector<double> floor_cell_gray_;  // per cell: the gray of its whole neighbourhood, or -1
+  void compile_floor_cells(Vec2 lo, Vec2 hi);
 };
 
 }  // namespace sd

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace sd {
 
@@ -54,6 +55,31 @@ bool Region::contains_other(Vec2 p) const {
     }
   }
   return false;
+}
+
+double Region::boundary_distance(Vec2 p) const {
+  switch (shape) {
+    case Shape::Circle:
+      return std::abs((p - center).length() - radius);
+    case Shape::Rectangle: {
+      const Vec2 d = p - center;
+      const double c = std::cos(yaw), s = std::sin(yaw);
+      const double ex = std::abs(c * d.x + s * d.y) - half_size.x, ey = std::abs(-s * d.x + c * d.y) - half_size.y;
+      if (ex <= 0.0 && ey <= 0.0) return std::min(-ex, -ey);
+      return Vec2{std::max(ex, 0.0), std::max(ey, 0.0)}.length();
+    }
+    case Shape::Polygon: {
+      double best = std::numeric_limits<double>::infinity();
+      for (std::size_t i = 0, j = vertices.size() - 1; i < vertices.size(); j = i++) {
+        const Vec2 a = vertices[j], ab = vertices[i] - a;
+        const double len2 = ab.squared_length();
+        const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+        best = std::min(best, (p - (a + ab * t)).length());
+      }
+      return best;
+    }
+  }
+  return 0.0;
 }
 
 std::pair<Vec2, Vec2> Region::bounds() const {

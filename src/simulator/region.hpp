@@ -29,6 +29,8 @@ struct Region {
     }
     return contains_other(p);
   }
+  /// Distance from p to the region's edge, whether p is inside or outside.
+  double boundary_distance(Vec2 p) const;
   /// Axis-aligned bounds (min, max).
   std::pair<Vec2, Vec2> bounds() const;
   double area() const;

@@ -11,7 +11,12 @@ namespace {
 
 constexpr double kRadius = epuck::kBodyRadius;
 
-double clamp01(double v) { return v < 0.0 ? 0.0 : (v > 1.0 ? 1.0 : v); }
+// Written as max then min so that the compiler emits maxsd/minsd: noisy readings sit on
+// either side of 0 and 1 at random, and a branch would be mispredicted half the time.
+double clamp01(double v) {
+  v = v > 0.0 ? v : 0.0;
+  return v < 1.0 ? v : 1.0;
+}
 
 double with_uniform_noise(double v, double level, Rng& rng) {
   return clamp01(v + rng.coarse_uniform(-level, level));
@@ -194,11 +199,15 @@ void sense_light(const ArenaModel& arena, const RobotModel& model, SwarmState& s
 
 void sense_ground(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng) {
   for (int i = 0; i < swarm.size; ++i) {
+    const double uniform = arena.uniform_floor_gray(swarm.position[i]);
     const double c = swarm.heading[i].x, s = swarm.heading[i].y;
     for (int k = 0; k < 3; ++k) {
-      const Vec2 o = epuck::kGroundSensorOffsets[k];
-      const Vec2 point = swarm.position[i] + Vec2{c * o.x - s * o.y, s * o.x + c * o.y};
-      swarm.ground[i][k] = with_uniform_noise(arena.floor_gray(point), model.ground_noise, rng);
+      double gray = uniform;
+      if (gray < 0.0) {  // near a patch edge: each sensor's own point
+        const Vec2 o = epuck::kGroundSensorOffsets[k];
+        gray = arena.floor_gray(swarm.position[i] + Vec2{c * o.x - s * o.y, s * o.x + c * o.y});
+      }
+      swarm.ground[i][k] = with_uniform_noise(gray, model.ground_noise, rng);
     }
   }
 }

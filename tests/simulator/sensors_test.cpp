@@ -1,6 +1,7 @@
 // Every sensor against geometry computed by hand (robot-and-simulator.md §3).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/rng.hpp"
@@ -171,6 +172,40 @@ TEST(Ground, ThreeSensorsReadTheFloorUnderThem) {
   EXPECT_EQ(s.ground[0][0], kGrayWhite);  // left sensor at (0.03, +0.009)
   EXPECT_EQ(s.ground[0][1], kGrayBlack);  // centre
   EXPECT_NEAR(s.ground[0][2], 127.0 / 255.0, 1e-12);  // right: GRAY50 background
+}
+
+TEST(Ground, UniformFloorCellsAgreeWithEveryPointAroundThem) {
+  // Overlapping patches of each shape (first match wins): wherever the look-up answers, every
+  // point within the sensors' reach must have that gray; near the edges it must decline.
+  ArenaModel arena;
+  arena.floor_patches.push_back({Region::circle({0.1, 0.0}, 0.3), kGrayBlack, 0});
+  arena.floor_patches.push_back({Region::rectangle({-0.2, 0.1}, {0.5, 0.3}, 0.4), kGrayWhite, 0xffffff});
+  arena.floor_patches.push_back({Region::polygon({{0.2, -0.5}, {0.7, -0.4}, {0.3, 0.2}, {0.45, -0.3}}), 0.25, 0x404040});
+  arena.compile();
+  Rng rng(7);
+  int uniform = 0, declined_near_edge = 0;
+  for (int n = 0; n < 4000; ++n) {
+    const Vec2 p{rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0.5)};  // inside the grid
+    const double gray = arena.uniform_floor_gray(p);
+    if (gray < 0.0) {
+      const bool near_edge = std::any_of(arena.floor_patches.begin(), arena.floor_patches.end(),
+                                         [&](const FloorPatch& f) { return f.region.boundary_distance(p) < 0.061; });
+      declined_near_edge += near_edge ? 1 : 0;
+      EXPECT_TRUE(near_edge) << p.x << " " << p.y;
+      continue;
+    }
+    ++uniform;
+    for (int k = 0; k < 16; ++k) {
+      const Vec2 q = p + Vec2::polar(ArenaModel::kUniformFloorReach * rng.uniform(), rng.uniform(-kPi, kPi));
+      ASSERT_EQ(arena.floor_gray(q), gray) << p.x << " " << p.y;
+    }
+  }
+  EXPECT_GT(uniform, 2000);  // the look-up serves most of this busy floor
+  EXPECT_GT(declined_near_edge, 50);
+}
+
+TEST(Ground, SensorsLieWithinTheUniformFloorReach) {
+  for (const Vec2 o : epuck::kGroundSensorOffsets) EXPECT_LT(o.length(), ArenaModel::kUniformFloorReach);
 }
 
 TEST(RangeAndBearing, RangeIsCentreDistanceInCmMinusSevenAndBearingIsRelative) {
