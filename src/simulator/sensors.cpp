@@ -67,84 +67,89 @@ double ray_disc_entry(Vec2 origin, Vec2 direction, Vec2 center, double radius) {
   return -b - std::sqrt(disc);
 }
 
-void update_pairs(SwarmState& swarm, double neighbour_range) {
-  const double range_sq = neighbour_range * neighbour_range;
-  const std::size_t stride = swarm.rab_stride();
-  std::fill(swarm.neighbour_count.begin(), swarm.neighbour_count.end(), 0);
-  for (RobotPair& pair : swarm.pairs) {
+void update_pairs(SwarmState& swarm) {
+  constexpr double kCloseSq = kProximityPairRange * kProximityPairRange;
+  for (int i = 0; i < swarm.size; ++i) {
+    swarm.position_x[i] = swarm.position[i].x;
+    swarm.position_y[i] = swarm.position[i].y;
+  }
+  // Whether a pair is close is a coin toss for the branch predictor inside a cluster, so
+  // every index is written and the count advances only for close pairs.
+  int close = 0;
+  for (std::size_t k = 0; k < swarm.pairs.size(); ++k) {
+    RobotPair& pair = swarm.pairs[k];
     pair.delta = swarm.position[pair.b] - swarm.position[pair.a];
     pair.distance_sq = pair.delta.squared_length();
-    if (pair.distance_sq < range_sq) {
-      swarm.neighbours[pair.a * stride + swarm.neighbour_count[pair.a]++] = {pair.b, pair.delta, pair.distance_sq};
-      swarm.neighbours[pair.b * stride + swarm.neighbour_count[pair.b]++] = {pair.a, -pair.delta, pair.distance_sq};
-    }
+    swarm.close_pairs[static_cast<std::size_t>(close)] = static_cast<std::uint16_t>(k);
+    close += pair.distance_sq < kCloseSq ? 1 : 0;
   }
+  swarm.close_pair_count = close;
 }
 
 void sense_proximity(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng) {
   constexpr double kRing = epuck::kProximityRingRadius;
-  constexpr double kReach = kRing + epuck::kProximityRange + kRadius;
+  constexpr double kNoHit = 2.0 * epuck::kProximityRange;  // reads 0
+  // First the distance along each ray to the nearest body (kept in the reading array), then
+  // the readings. Bodies come from the close pairs, both ways; the minimum does not depend
+  // on the order in which they are met.
+  for (int i = 0; i < swarm.size; ++i) swarm.proximity[i].fill(kNoHit);
+  auto cast_towards = [&](int i, Vec2 delta, double distance_sq) {
+    std::array<double, 8>& best = swarm.proximity[i];
+    const Vec2 h = swarm.heading[i];
+    // The other body, in the robot's frame: ray k starts at kRing u_k and runs along u_k.
+    const Vec2 c{h.x * delta.x + h.y * delta.y, h.x * delta.y - h.y * delta.x};
+    const double base = distance_sq - kRadius * kRadius + kRing * kRing;
+    auto cast = [&](int k) {
+      const double along = c.x * kRays.cos[k] + c.y * kRays.sin[k];
+      const double b = kRing - along;               // (origin - centre) . u
+      const double q = base - 2.0 * kRing * along;  // |origin - centre|^2 - r^2
+      if (q <= 0.0) {
+        best[k] = 0.0;  // the sensor point is inside the other body
+        return;
+      }
+      const double disc = b * b - q;
+      if (disc < 0.0 || b > 0.0) return;
+      best[k] = std::min(best[k], -b - std::sqrt(disc));
+    };
+    // Rays are radial, so a body seen from the centre under a half-angle below 45 degrees
+    // (any body further than r sqrt 2, i.e. every body that does not overlap) can only
+    // meet the two rays that bracket its bearing; the others would find no root.
+    if (distance_sq > 2.0 * kRadius * kRadius) {
+      const int k = bracketing_ray(c);
+      cast(k);
+      cast((k + 1) & 7);
+    } else {
+      for (int k = 0; k < 8; ++k) cast(k);
+    }
+  };
+  for (int n = 0; n < swarm.close_pair_count; ++n) {
+    const RobotPair& pair = swarm.pairs[swarm.close_pairs[static_cast<std::size_t>(n)]];
+    if (swarm.demand[pair.a] & SwarmState::kDemandProximity) cast_towards(pair.a, pair.delta, pair.distance_sq);
+    if (swarm.demand[pair.b] & SwarmState::kDemandProximity) cast_towards(pair.b, -pair.delta, pair.distance_sq);
+  }
   for (int i = 0; i < swarm.size; ++i) {
     std::array<double, 8>& reading = swarm.proximity[i];
     if (!(swarm.demand[i] & SwarmState::kDemandProximity)) {
       reading.fill(0.0);
       continue;
     }
-    std::array<double, 8> best;
-    best.fill(2.0 * epuck::kProximityRange);
-    bool any = false;
-    const Vec2 h = swarm.heading[i];
-    // Other bodies, in the robot's frame: ray k starts at kRing u_k and runs along u_k.
-    for (const auto& nb : swarm.neighbours_of(i)) {
-      if (nb.distance_sq >= kReach * kReach) continue;
-      any = true;
-      const Vec2 c{h.x * nb.delta.x + h.y * nb.delta.y, h.x * nb.delta.y - h.y * nb.delta.x};
-      const double base = nb.distance_sq - kRadius * kRadius + kRing * kRing;
-      auto cast = [&](int k) {
-        const double along = c.x * kRays.cos[k] + c.y * kRays.sin[k];
-        const double b = kRing - along;               // (origin - centre) . u
-        const double q = base - 2.0 * kRing * along;  // |origin - centre|^2 - r^2
-        if (q <= 0.0) {
-          best[k] = 0.0;  // the sensor point is inside the other body
-          return;
-        }
-        const double disc = b * b - q;
-        if (disc < 0.0 || b > 0.0) return;
-        best[k] = std::min(best[k], -b - std::sqrt(disc));
-      };
-      // Rays are radial, so a body seen from the centre under a half-angle below 45 degrees
-      // (any body further than r sqrt 2, i.e. every body that does not overlap) can only
-      // meet the two rays that bracket its bearing; the others would find no root.
-      if (nb.distance_sq > 2.0 * kRadius * kRadius) {
-        const int k = bracketing_ray(c);
-        cast(k);
-        cast((k + 1) & 7);
-      } else {
-        for (int k = 0; k < 8; ++k) cast(k);
-      }
-    }
-    const Vec2 p = swarm.position[i];
+    const Vec2 p = swarm.position[i], h = swarm.heading[i];
     for (const std::uint16_t w : arena.walls_near(p)) {
       const Wall& wall = arena.walls[w];
       if (wall.distance(p, nullptr) > kRing + epuck::kProximityRange) continue;
-      any = true;
       for (int k = 0; k < 8; ++k) {
         const Vec2 dir{h.x * kRays.cos[k] - h.y * kRays.sin[k], h.y * kRays.cos[k] + h.x * kRays.sin[k]};
         const Vec2 origin = p + dir * kRing;
         const double t = wall.segment_entry(origin, origin + dir * epuck::kProximityRange);
-        if (t <= 1.0) best[k] = std::min(best[k], t * epuck::kProximityRange);
+        if (t <= 1.0) reading[k] = std::min(reading[k], t * epuck::kProximityRange);
       }
     }
-    for (int k = 0; k < 8; ++k) {
-      const double v = any ? epuck::proximity_reading(best[k]) : 0.0;
-      reading[k] = with_uniform_noise(v, model.proximity_noise, rng);
-    }
+    for (double& v : reading) v = with_uniform_noise(epuck::proximity_reading(v), model.proximity_noise, rng);
   }
 }
 
 void sense_light(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng) {
   const int n = swarm.size;
-  const double neighbour_range_sq = neighbour_range(model) * neighbour_range(model);
   for (int i = 0; i < n; ++i) {
     std::array<double, 8>& reading = swarm.light[i];
     reading.fill(0.0);
@@ -172,15 +177,8 @@ void sense_light(const ArenaModel& arena, const RobotModel& model, SwarmState& s
           const double t = ray_disc_entry(p, dir, center, kRadius);
           return t >= 0.0 && t <= reach;
         };
-        if (reach_sq < neighbour_range_sq) {
-          for (const auto& nb : swarm.neighbours_of(i))
-            if (nb.distance_sq < reach_sq && blocks(swarm.position[nb.other])) {
-              occluded = true;
-              break;
-            }
-        } else {
-          for (int j = 0; j < n && !occluded; ++j) occluded = j != i && blocks(swarm.position[j]);
-        }
+        for (int j = 0; j < n && !occluded; ++j)
+          occluded = j != i && (swarm.position[j] - p).squared_length() < reach_sq && blocks(swarm.position[j]);
       }
       if (occluded) continue;
       const double dz = light.position.z;
@@ -212,6 +210,43 @@ void sense_ground(const ArenaModel& arena, const RobotModel& model, SwarmState& 
   }
 }
 
+namespace {
+
+/// True if no other robot's body touches the segment between the two robots of `pair`. The
+/// RAB ray runs at 5.2 cm, below every body's top, so any body on it blocks the packet.
+bool no_robot_between(SwarmState& swarm, const RobotPair& pair) {
+  // A body touching the segment lies within r of the line through a and b (a cross product,
+  // slightly loose so that rounding never hides a body the exact test would see) and closer
+  // than |ab| + r to both ends. Counting such bodies over all robots is a branch-free loop
+  // over the coordinate arrays that vectorises; a and b always count, so only a count above
+  // two calls for the exact test.
+  const double ax = swarm.position_x[pair.a], ay = swarm.position_y[pair.a];
+  const double bx = swarm.position_x[pair.b], by = swarm.position_y[pair.b];
+  const double reach = std::sqrt(pair.distance_sq) + kRadius;
+  const double reach_sq = reach * reach;
+  const double line_limit = kRadius * kRadius * pair.distance_sq * (1.0 + 1e-9);
+  const double* x = swarm.position_x.data();
+  const double* y = swarm.position_y.data();
+  // The flags are doubles, like the coordinates, so that the loop vectorises.
+  double* near = swarm.scratch.data();
+  double count = 0.0;
+  for (int k = 0; k < swarm.size; ++k) {
+    const double dx = x[k] - ax, dy = y[k] - ay, ex = x[k] - bx, ey = y[k] - by;
+    const double cross = dx * pair.delta.y - dy * pair.delta.x;
+    const double near_line = cross * cross < line_limit ? 1.0 : 0.0;
+    const double near_a = dx * dx + dy * dy < reach_sq ? near_line : 0.0;
+    near[k] = ex * ex + ey * ey < reach_sq ? near_a : 0.0;
+    count += near[k];
+  }
+  if (count <= 2.0) return true;
+  const Vec2 pa = swarm.position[pair.a], pb = swarm.position[pair.b];
+  for (int k = 0; k < swarm.size; ++k)
+    if (near[k] != 0.0 && k != pair.a && k != pair.b && segment_hits_disc(pa, pb, swarm.position[k], kRadius)) return false;
+  return true;
+}
+
+}  // namespace
+
 void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng) {
   std::fill(swarm.rab_count.begin(), swarm.rab_count.end(), 0);
   const std::size_t stride = swarm.rab_stride();
@@ -226,25 +261,8 @@ void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, S
     const bool a_receives = (bits >> 32) >= loss_threshold;
     const bool b_receives = (bits & 0xffffffffu) >= loss_threshold;
     if (!a_receives && !b_receives) continue;
-    const Vec2 pa = swarm.position[pair.a], pb = swarm.position[pair.b];
-    // The RAB ray runs at 5.2 cm, below every body's top: any robot or wall on it blocks.
-    // A body that touches the segment is closer than |ab| + r to both ends.
-    bool visible = arena.line_of_sight_walls(pa, pb);
-    const double reach = std::sqrt(pair.distance_sq) + kRadius;
-    const double reach_sq = reach * reach;
-    // Such a body is among a's neighbours (their range covers the RAB range plus a body),
-    // and first of all within r of the line through a and b (a cross product on the stored
-    // offsets, slightly loose so that rounding never hides a body the exact test would see).
-    const double line_limit = kRadius * kRadius * pair.distance_sq * (1.0 + 1e-9);
-    for (const auto& nb : swarm.neighbours_of(pair.a)) {
-      if (!visible) break;
-      const double cross = nb.delta.x * pair.delta.y - nb.delta.y * pair.delta.x;
-      if (cross * cross >= line_limit) continue;
-      if (nb.distance_sq >= reach_sq || nb.other == pair.b) continue;
-      const Vec2 pk = swarm.position[nb.other];
-      if ((pk - pb).squared_length() >= reach_sq) continue;
-      if (segment_hits_disc(pa, pb, pk, kRadius)) visible = false;
-    }
+    const bool visible = arena.line_of_sight_walls(swarm.position[pair.a], swarm.position[pair.b]) &&
+                         no_robot_between(swarm, pair);
     if (!visible) continue;
     const double distance = std::sqrt(pair.distance_sq);
     const double range_cm = distance * 100.0 - epuck::kRabRangeOffsetCm;
@@ -258,11 +276,6 @@ void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, S
       swarm.rab[pair.b * stride + swarm.rab_count[pair.b]++] = {range_cm, {-(h.x * u.x + h.y * u.y), -(h.x * u.y - h.y * u.x)}, pair.a};
     }
   }
-}
-
-double neighbour_range(const RobotModel& model) {
-  return std::max({model.rab_range + kRadius, model.camera_range + std::abs(kRgbLedOffset),
-                   epuck::kProximityRingRadius + epuck::kProximityRange + kRadius});
 }
 
 void sense_camera(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm) {
@@ -284,10 +297,10 @@ void sense_camera(const ArenaModel& arena, const RobotModel& model, SwarmState& 
       out[count++] = {rgb, d > 0.0 ? local * (1.0 / d) : Vec2{1.0, 0.0}, d * 100.0};
     };
     // Robots never occlude LEDs: the ray stays above their 7.6 cm tops down to 7.65 cm.
-    for (const auto& nb : swarm.neighbours_of(i)) {
-      const std::uint32_t rgb = swarm.led[nb.other];
-      if (rgb == 0) continue;
-      const Vec2 led = swarm.position[nb.other] + swarm.heading[nb.other] * kRgbLedOffset;
+    for (int j = 0; j < swarm.size; ++j) {
+      const std::uint32_t rgb = swarm.led[static_cast<std::size_t>(j)];
+      if (rgb == 0 || j == i) continue;
+      const Vec2 led = swarm.position[j] + swarm.heading[j] * kRgbLedOffset;
       const Vec2 offset = led - p;
       if (offset.squared_length() + kDz * kDz >= range_sq) continue;
       if (!arena.camera_line_of_sight(camera, {led.x, led.y, epuck::kRgbLedElevation})) continue;
@@ -308,7 +321,7 @@ void sense_camera(const ArenaModel& arena, const RobotModel& model, SwarmState& 
 }
 
 void sense(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng, SensorSet sensors) {
-  update_pairs(swarm, neighbour_range(model));
+  update_pairs(swarm);
   if (sensors.range_and_bearing) sense_range_and_bearing(arena, model, swarm, rng);
   if (sensors.proximity) sense_proximity(arena, model, swarm, rng);
   if (sensors.light) sense_light(arena, model, swarm, rng);

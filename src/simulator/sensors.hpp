@@ -4,6 +4,7 @@
 // Reads poses, writes the sensor arrays of SwarmState; draws noise from the run's Rng.
 #include "core/rng.hpp"
 #include "simulator/arena.hpp"
+#include "simulator/epuck.hpp"
 #include "simulator/robot_model.hpp"
 #include "simulator/swarm.hpp"
 
@@ -15,11 +16,11 @@ struct SensorSet {
   bool proximity = true, light = true, ground = true, range_and_bearing = true, camera = false;
 };
 
-/// Refreshes the pair table and the neighbour lists (call after physics, before sensing).
-void update_pairs(SwarmState& swarm, double neighbour_range);
-/// Neighbour lists cover every sensor's reach: RAB (plus a body, for its line of sight), camera,
-/// proximity.
-double neighbour_range(const RobotModel& model);
+/// Refreshes the pair table, the close pairs and the position arrays (call after physics,
+/// before sensing).
+void update_pairs(SwarmState& swarm);
+/// Centre distance below which a proximity ray of one robot can meet the other's body.
+inline constexpr double kProximityPairRange = epuck::kProximityRingRadius + epuck::kProximityRange + epuck::kBodyRadius;
 
 void sense_proximity(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng);
 void sense_light(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng);

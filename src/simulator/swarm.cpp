@@ -23,10 +23,12 @@ void SwarmState::resize(int robots, int arena_leds) {
   arena_led_color.assign(static_cast<std::size_t>(arena_leds), 0);
   blobs_per_robot = static_cast<int>(rab_stride()) + arena_leds;
   blobs.assign(n * static_cast<std::size_t>(blobs_per_robot), {});
-  neighbours.assign(n * rab_stride(), {});
-  neighbour_count.assign(n, 0);
+  position_x.assign(n, 0.0);
+  position_y.assign(n, 0.0);
+  scratch.assign(n, 0.0);
   pairs.clear();
   pairs.reserve(n * (n - 1) / 2);
+  close_pairs.assign(n * (n - 1) / 2 + 1, 0);  // one spare slot for the branch-free append
   for (std::size_t a = 0; a < n; ++a)
     for (std::size_t b = a + 1; b < n; ++b)
       pairs.push_back({static_cast<std::uint16_t>(a), static_cast<std::uint16_t>(b), {}, 0.0});

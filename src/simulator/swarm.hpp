@@ -69,18 +69,14 @@ struct SwarmState {
   enum SensorDemand : std::uint8_t { kDemandProximity = 1, kDemandLight = 2, kDemandCamera = 4, kDemandAll = 7 };
   std::vector<std::uint8_t> demand;
 
-  /// Per robot, the other robots within kNeighbourRange this tick (built from the pairs):
-  /// neighbours[i * (size - 1) + k], k < neighbour_count[i].
-  struct Neighbour {
-    std::uint16_t other;
-    Vec2 delta;          // position[other] - position[i]
-    double distance_sq;
-  };
-  std::vector<Neighbour> neighbours;
-  std::vector<std::uint16_t> neighbour_count;
-  std::span<const Neighbour> neighbours_of(int robot) const {
-    return {neighbours.data() + static_cast<std::size_t>(robot) * rab_stride(), neighbour_count[static_cast<std::size_t>(robot)]};
-  }
+  /// Indices into `pairs` of the pairs close enough for a proximity ray to meet the other
+  /// body (the first close_pair_count entries), refreshed with the pairs.
+  std::vector<std::uint16_t> close_pairs;
+  int close_pair_count = 0;
+  /// This tick's positions as two plain arrays, refreshed with the pairs: the line-of-sight
+  /// tests scan every robot at once, and contiguous coordinates let that scan vectorise.
+  std::vector<double> position_x, position_y;
+  std::vector<double> scratch;  // one value per robot, for a sensor's intermediate results
 
   void resize(int robots, int arena_leds = 0);
   std::size_t rab_stride() const { return static_cast<std::size_t>(size > 1 ? size - 1 : 1); }

@@ -21,7 +21,7 @@ double total_light(const ArenaModel& arena, Vec2 p, double yaw) {
   s.yaw[0] = yaw;
   s.heading[0] = {std::cos(yaw), std::sin(yaw)};
   Rng rng(1);
-  update_pairs(s, neighbour_range(model));
+  update_pairs(s);
   sense_light(arena, model, s, rng);
   double sum = 0.0;
   for (const double v : s.light[0]) sum += v;

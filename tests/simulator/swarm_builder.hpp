@@ -1,5 +1,5 @@
 #pragma once
-// Builds a SwarmState with robots at given poses, pairs and neighbour lists refreshed, for
+// Builds a SwarmState with robots at given poses, its pair table refreshed, for
 // the sensor tests.
 #include <initializer_list>
 #include <utility>
@@ -18,7 +18,7 @@ inline SwarmState robots(std::initializer_list<std::pair<Vec2, double>> poses, i
     s.heading[i] = Vec2::polar(1.0, yaw);
     ++i;
   }
-  update_pairs(s, 1.0);
+  update_pairs(s);
   return s;
 }
 
