@@ -50,7 +50,8 @@ Actuation SwarmController::step(int robot, const ReferenceModel& rm, Rng& rng) {
   return {0.0, 0.0};
 }
 
-Actuation SwarmController::step_fsm(int robot, const ReferenceModel& rm, Rng& rng) {
+// Inlined into step(): the control step of every robot at every tick goes through here.
+inline Actuation SwarmController::step_fsm(int robot, const ReferenceModel& rm, Rng& rng) {
   const auto r = static_cast<std::size_t>(robot);
   const auto current = static_cast<std::size_t>(current_[r]);
   const FsmState& state = software_->fsm.states[current];
