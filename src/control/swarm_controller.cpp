@@ -50,7 +50,8 @@ Actuation SwarmController::step(int robot, const ReferenceModel& rm, Rng& rng) {
   return {0.0, 0.0};
 }
 
-Actuation SwarmController::step_fsm(int robot, const ReferenceModel& rm, Rng& rng) {
+// Inlined into step(): the control step of every robot at every tick goes through here.
+inline Actuation SwarmController::step_fsm(int robot, const ReferenceModel& rm, Rng& rng) {
   const auto r = static_cast<std::size_t>(robot);
   const auto current = static_cast<std::size_t>(current_[r]);
   const FsmState& state = software_->fsm.states[current];
@@ -78,45 +79,59 @@ Actuation SwarmController::step_fsm(int robot, const ReferenceModel& rm, Rng& rn
 
 Actuation SwarmController::step_tree(int robot, const ReferenceModel& rm, Rng& rng) {
   Actuation out{0.0, 0.0};
-  const Status status = tick(robot, 0, rm, rng, out);
+  TreeTick t{static_cast<std::size_t>(robot), rm, rng, out};
+  const Status status = tick(t, 0);
   if (status != Status::Running) return {0.0, 0.0, out.led};  // the tree ended: stop this step
   return out;
 }
 
-SwarmController::Status SwarmController::tick(int robot, int node_index, const ReferenceModel& rm, Rng& rng,
-                                              Actuation& out) {
+// Most nodes of a tree are leaves, and a leaf does less work than a call: a leaf is ticked
+// where its parent asks for it, and only composites recurse.
+inline SwarmController::Status SwarmController::tick(TreeTick& t, int node_index) {
   const BtNode& node = software_->bt.nodes[static_cast<std::size_t>(node_index)];
-  const std::size_t slot = static_cast<std::size_t>(robot) * static_cast<std::size_t>(slots_) +
-                           static_cast<std::size_t>(node_index);
+  if (node.type == BtNodeType::Condition)
+    return check_condition(node.module, t.rm, t.rng) ? Status::Success : Status::Failure;
+  if (node.type == BtNodeType::Action) return tick_action(t, node_index);
+  return tick_composite(t, node_index);
+}
+
+inline SwarmController::Status SwarmController::tick_action(TreeTick& t, int node_index) {
+  const BtNode& node = software_->bt.nodes[static_cast<std::size_t>(node_index)];
+  // Actions are not reset when they become active again (their memory persists).
+  if (node.success_probability > 0.0 && t.rng.bernoulli(node.success_probability)) return Status::Success;
+  const std::size_t slot = t.robot * static_cast<std::size_t>(slots_) + static_cast<std::size_t>(node_index);
+  t.out = run_behaviour(node.module, memory_[slot], t.rm, t.rng);
+  current_[t.robot] = static_cast<std::int16_t>(node_index);
+  return Status::Running;
+}
+
+SwarmController::Status SwarmController::tick_composite(TreeTick& t, int node_index) {
+  const BtNode& node = software_->bt.nodes[static_cast<std::size_t>(node_index)];
+  const std::size_t slot = t.robot * static_cast<std::size_t>(slots_) + static_cast<std::size_t>(node_index);
   const auto children = static_cast<int>(node.children.size());
   switch (node.type) {
     case BtNodeType::Condition:
-      return check_condition(node.module, rm, rng) ? Status::Success : Status::Failure;
     case BtNodeType::Action:
-      // Actions are not reset when they become active again (their memory persists).
-      if (node.success_probability > 0.0 && rng.bernoulli(node.success_probability)) return Status::Success;
-      out = run_behaviour(node.module, memory_[slot], rm, rng);
-      current_[static_cast<std::size_t>(robot)] = static_cast<std::int16_t>(node_index);
-      return Status::Running;
+      return tick(t, node_index);
     case BtNodeType::Negation: {
-      const Status s = tick(robot, node.children.front(), rm, rng, out);
+      const Status s = tick(t, node.children.front());
       return s == Status::Running ? s : (s == Status::Success ? Status::Failure : Status::Success);
     }
     case BtNodeType::Selector:
       for (const int child : node.children) {
-        const Status s = tick(robot, child, rm, rng, out);
+        const Status s = tick(t, child);
         if (s != Status::Failure) return s;
       }
       return Status::Failure;
     case BtNodeType::Sequence:
       for (const int child : node.children) {
-        const Status s = tick(robot, child, rm, rng, out);
+        const Status s = tick(t, child);
         if (s != Status::Success) return s;
       }
       return Status::Success;
     case BtNodeType::SelectorStar:
       for (int c = running_[slot]; c < children; ++c) {
-        const Status s = tick(robot, node.children[static_cast<std::size_t>(c)], rm, rng, out);
+        const Status s = tick(t, node.children[static_cast<std::size_t>(c)]);
         if (s == Status::Running) {
           running_[slot] = static_cast<std::uint8_t>(c);
           return s;
@@ -130,7 +145,7 @@ SwarmController::Status SwarmController::tick(int robot, int node_index, const R
       return Status::Success;  // ARGoS3-AutoMoDe's Selector* succeeds when all children fail
     case BtNodeType::SequenceStar:
       for (int c = running_[slot]; c < children; ++c) {
-        const Status s = tick(robot, node.children[static_cast<std::size_t>(c)], rm, rng, out);
+        const Status s = tick(t, node.children[static_cast<std::size_t>(c)]);
         if (s == Status::Running) {
           running_[slot] = static_cast<std::uint8_t>(c);
           return s;

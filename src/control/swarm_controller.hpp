@@ -47,7 +47,17 @@ class SwarmController {
   /// Behaviour-tree step (§7.4): tick the root once; a tree that returns success or
   /// failure stops the robot for this step.
   Actuation step_tree(int robot, const ReferenceModel& rm, Rng& rng);
-  Status tick(int robot, int node, const ReferenceModel& rm, Rng& rng, Actuation& out);
+  /// What every node of one robot's tree tick reads or writes.
+  struct TreeTick {
+    std::size_t robot;
+    const ReferenceModel& rm;
+    Rng& rng;
+    Actuation& out;  // the command of the action that ran
+  };
+  /// Ticks any node: leaves in place, composites through tick_composite.
+  Status tick(TreeTick& t, int node);
+  Status tick_action(TreeTick& t, int node);
+  Status tick_composite(TreeTick& t, int node);
 
   const ControlSoftware* software_;
   int slots_;                             // states (FSM) or nodes (tree) per robot

@@ -16,15 +16,15 @@ namespace {
 
 constexpr std::size_t kGroundInput = 16, kNeighbourCountInput = 19, kNeighbourDirectionInput = 20, kBiasInput = 24;
 
-/// u_k = (1 at pi (2k + 1) / 4): the four diagonal directions of inputs 20-23.
-const std::array<Vec2, 4>& diagonals() {
-  static const std::array<Vec2, 4> u = [] {
-    std::array<Vec2, 4> d{};
-    for (std::size_t k = 0; k < 4; ++k) d[k] = Vec2::polar(1.0, kPi * static_cast<double>(2 * k + 1) / 4.0);
-    return d;
-  }();
-  return u;
+std::array<Vec2, 4> make_diagonals() {
+  std::array<Vec2, 4> d{};
+  for (std::size_t k = 0; k < 4; ++k) d[k] = Vec2::polar(1.0, kPi * static_cast<double>(2 * k + 1) / 4.0);
+  return d;
 }
+
+/// u_k = (1 at pi (2k + 1) / 4): the four diagonal directions of inputs 20-23. Built at
+/// start-up: the network's inputs are encoded for every robot at every step.
+const std::array<Vec2, 4> kDiagonals = make_diagonals();
 
 }  // namespace
 
@@ -38,9 +38,9 @@ Inputs encode_inputs(const ReferenceModel& rm) {
   for (std::size_t k = 0; k < 3; ++k)
     x[kGroundInput + k] = rm.ground <= 0.1 ? 0.0 : (rm.ground >= 0.95 ? 1.0 : rm.raw_ground[k]);
   x[kNeighbourCountInput] = 1.0 - 2.0 / (1.0 + std::exp(static_cast<double>(rm.neighbours)));
-  if (rm.buffered_messages > 0) {
-    const Vec2 centre = rm.neighbour_position_sum * (1.0 / static_cast<double>(rm.buffered_messages));
-    for (std::size_t k = 0; k < 4; ++k) x[kNeighbourDirectionInput + k] = std::max(0.0, dot(centre, diagonals()[k]));
+  if (const int messages = rm.buffered_messages(); messages > 0) {
+    const Vec2 centre = rm.neighbour_position_sum() * (1.0 / static_cast<double>(messages));
+    for (std::size_t k = 0; k < 4; ++k) x[kNeighbourDirectionInput + k] = std::max(0.0, dot(centre, kDiagonals[k]));
   }
   x[kBiasInput] = 1.0;
   return x;

@@ -12,26 +12,27 @@ double neighbours_probability(double xi, double eta, int neighbours) {
 
 bool check_condition(const ModuleInstance& c, const ReferenceModel& rm, Rng& rng) {
   const auto& prm = c.parameters;
-  if (c.id == 27) {  // ColorDetection (TuttiFrutti): a blob of colour l at 6 cm or more
-    const std::uint32_t rgb = palette_color(static_cast<int>(prm[1]));
-    for (const CameraBlob& blob : rm.blobs)
-      if (blob.rgb == rgb && blob.distance_cm >= 6.0) return rng.bernoulli(prm[0]);
-    return false;
-  }
-  // Every flavour's conditions 0-5 are Chocolate's.
-  switch (c.id % 10) {
-    case 0:
+  // Every flavour's conditions 0-5 are Chocolate's. The ids are listed rather than taken
+  // modulo 10: conditions are checked for every robot at every step.
+  switch (c.id) {
+    case 10: case 20: case 30: case 40: case 50:  // BlackFloor
       return rm.ground <= 0.1 && rng.bernoulli(prm[0]);
-    case 1:
+    case 11: case 21: case 31: case 41: case 51:  // GrayFloor
       return rm.ground > 0.1 && rm.ground < 0.95 && rng.bernoulli(prm[0]);
-    case 2:
+    case 12: case 22: case 32: case 42: case 52:  // WhiteFloor
       return rm.ground >= 0.95 && rng.bernoulli(prm[0]);
-    case 3:
+    case 13: case 23: case 33: case 43: case 53:  // NeighborsCount
       return rng.bernoulli(neighbours_probability(prm[0], prm[1], rm.neighbours));
-    case 4:
+    case 14: case 24: case 34: case 44: case 54:  // InvertedNeighborsCount
       return rng.bernoulli(1.0 - neighbours_probability(prm[0], prm[1], rm.neighbours));
-    case 5:
+    case 15: case 25: case 35: case 45: case 55:  // FixedProbability
       return rng.bernoulli(prm[0]);
+    case 27: {  // ColorDetection (TuttiFrutti): a blob of colour l at 6 cm or more
+      const std::uint32_t rgb = palette_color(static_cast<int>(prm[1]));
+      for (const CameraBlob& blob : rm.blobs)
+        if (blob.rgb == rgb && blob.distance_cm >= 6.0) return rng.bernoulli(prm[0]);
+      return false;
+    }
     default:
       return false;
   }

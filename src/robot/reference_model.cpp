@@ -7,26 +7,54 @@
 
 namespace sd {
 
-const std::array<Vec2, 8>& sensor_directions() {
-  static const std::array<Vec2, 8> directions = [] {
-    std::array<Vec2, 8> d{};
-    for (std::size_t k = 0; k < 8; ++k) d[k] = Vec2::polar(1.0, wrap_signed(epuck::kSensorAngles[k]));
-    return d;
-  }();
-  return directions;
+namespace {
+
+std::array<Vec2, 8> make_sensor_directions() {
+  std::array<Vec2, 8> d{};
+  for (std::size_t k = 0; k < 8; ++k) d[k] = Vec2::polar(1.0, wrap_signed(epuck::kSensorAngles[k]));
+  return d;
 }
 
+// Built at start-up rather than on first use: update() runs for every robot at every step
+// and should not test an initialisation guard each time.
+const std::array<Vec2, 8> kSensorDirections = make_sensor_directions();
+
+int next_slot(int slot, int slots) { return slot + 1 == slots ? 0 : slot + 1; }
+
+}  // namespace
+
+const std::array<Vec2, 8>& sensor_directions() { return kSensorDirections; }
+
 void ReferenceModel::reset() { *this = ReferenceModel{}; }
+
+int ReferenceModel::buffered_messages() const {
+  int messages = 0;
+  for (const int step : rab_message_steps) messages += step;
+  return messages;
+}
 
 void ReferenceModel::update(const SwarmState& swarm, int robot) {
   const auto r = static_cast<std::size_t>(robot);
   raw_proximity = swarm.proximity[r];
   raw_light = swarm.light[r];
   raw_ground = swarm.ground[r];
+  const std::size_t stride = swarm.rab_stride();
+  packets = std::span<const RabPacket>(swarm.rab.data() + r * stride, swarm.rab_count[r]);
+  if (swarm.blobs_per_robot > 0)
+    blobs = std::span<const CameraBlob>(swarm.blobs.data() + r * static_cast<std::size_t>(swarm.blobs_per_robot),
+                                        swarm.blob_count[r]);
 
-  // Ground: majority over the last 5 steps x 3 sensors (more than 10 of 15 samples). Each
-  // step's black and white counts are kept, so the window sum is updated, not recounted.
-  const auto slot = static_cast<std::size_t>(ground_samples % kGroundHistory);
+  update_ground();
+  update_range_and_bearing();
+  // A robot not sensed for proximity or light does not read it at this step.
+  if (swarm.demand[r] & SwarmState::kDemandProximity) update_proximity();
+  if (swarm.demand[r] & SwarmState::kDemandLight) update_light();
+}
+
+void ReferenceModel::update_ground() {
+  // Majority over the last 5 steps x 3 sensors (more than 10 of 15 samples). Each step's
+  // black and white counts are kept, so the window sum is updated, not recounted.
+  const auto slot = static_cast<std::size_t>(ground_slot);
   std::uint8_t black = 0, white = 0;
   for (const double g : raw_ground) {
     if (g < 0.03) ++black;
@@ -36,49 +64,39 @@ void ReferenceModel::update(const SwarmState& swarm, int robot) {
   window_white += white - ground_white[slot];
   ground_black[slot] = black;
   ground_white[slot] = white;
-  ++ground_samples;
+  ground_slot = next_slot(ground_slot, kGroundHistory);
   ground = window_black > 10 ? 0.0 : (window_white > 10 ? 1.0 : 0.5);
+}
 
-  const auto& directions = sensor_directions();
-  Vec2 prox, light_sum;
-  bool lit = false;
-  for (std::size_t k = 0; k < 8; ++k) {
-    prox += directions[k] * raw_proximity[k];
-    light_sum += directions[k] * raw_light[k];
-    lit = lit || raw_light[k] > 0.2;
-  }
-  const double prox_length = prox.length();
-  proximity = prox_length > 1.0 ? prox * (1.0 / prox_length) : prox;
-  const double light_length = light_sum.length();
-  light = lit && light_length > 0.0 ? light_sum * (1.0 / light_length) : Vec2{};
+void ReferenceModel::update_proximity() {
+  Vec2 sum;
+  for (std::size_t k = 0; k < 8; ++k) sum += kSensorDirections[k] * raw_proximity[k];
+  const double length = sum.length();
+  proximity = length > 1.0 ? sum * (1.0 / length) : sum;
+}
 
-  // Range and bearing: every sender is heard at most once per tick, so the number of
-  // distinct senders is the number of packets.
-  const std::size_t stride = swarm.rab_stride();
-  packets = std::span<const RabPacket>(swarm.rab.data() + r * stride, swarm.rab_count[r]);
+void ReferenceModel::update_light() {
+  Vec2 sum;
+  for (std::size_t k = 0; k < 8; ++k) sum += kSensorDirections[k] * raw_light[k];
+  const bool lit = std::any_of(raw_light.begin(), raw_light.end(), [](double v) { return v > 0.2; });
+  const double length = sum.length();
+  light = lit && length > 0.0 ? sum * (1.0 / length) : Vec2{};
+}
+
+void ReferenceModel::update_range_and_bearing() {
+  // Every sender is heard at most once per tick, so the number of distinct senders is the
+  // number of packets.
   neighbours = static_cast<int>(packets.size());
   Vec2 step_sum, step_positions;
   for (const RabPacket& p : packets) {
     step_sum += p.direction * (1.0 / (1.0 + p.range_cm));
     step_positions += p.direction * p.range_cm;
   }
-  const auto rab_slot = static_cast<std::size_t>(rab_step % kRabBufferSteps);
-  rab_steps[rab_slot] = step_sum;
-  rab_position_steps[rab_slot] = step_positions;
-  rab_message_steps[rab_slot] = neighbours;
-  ++rab_step;
-  attraction_sum = {};
-  neighbour_position_sum = {};
-  buffered_messages = 0;
-  for (std::size_t k = 0; k < kRabBufferSteps; ++k) {
-    attraction_sum += rab_steps[k];
-    neighbour_position_sum += rab_position_steps[k];
-    buffered_messages += rab_message_steps[k];
-  }
-
-  if (swarm.blobs_per_robot > 0)
-    blobs = std::span<const CameraBlob>(swarm.blobs.data() + r * static_cast<std::size_t>(swarm.blobs_per_robot),
-                                        swarm.blob_count[r]);
+  const auto slot = static_cast<std::size_t>(rab_slot);
+  rab_steps[slot] = step_sum;
+  rab_position_steps[slot] = step_positions;
+  rab_message_steps[slot] = neighbours;
+  rab_slot = next_slot(rab_slot, kRabBufferSteps);
 }
 
 }  // namespace sd

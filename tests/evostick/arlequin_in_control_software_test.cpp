@@ -84,7 +84,7 @@ TEST(ArlequinInControlSoftware, EnteringAnArlequinStateKeepsTheRangeAndBearingBu
   controller.step(0, rm, rng);  // FixedProbability(1) fires
   ASSERT_EQ(controller.current_state(0), 1);
   rm.update(swarm, 0);
-  ASSERT_EQ(rm.buffered_messages, 2);
+  ASSERT_EQ(rm.buffered_messages(), 2);
   const Actuation a = controller.step(0, rm, rng);  // entering state 1
   const Actuation expected = arlequin::drive(arlequin::shipped_weights(54), rm);
   EXPECT_EQ(a.left_cm, expected.left_cm);

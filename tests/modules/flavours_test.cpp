@@ -145,15 +145,15 @@ TEST(Coconut, AStimulusOverridesTheScheme) {
   expect_wheels(run_behaviour(module(32, {1, 30}), m, rm, rng), spec_wheels(rm.light - rm.proximity * 5.0));
   expect_wheels(run_behaviour(module(33, {2, 0, 2.0, 0.5}), m, rm, rng), spec_wheels(-rm.light - rm.proximity * 5.0));
   // Attraction: att (truncated) times A(att): grows with att^2.
-  rm.attraction_sum = Vec2::polar(0.05, 0.7);
-  expect_wheels(run_behaviour(module(34, {3.9, 0}), m, rm, rng), spec_wheels(rm.attraction_sum * 9.0 - rm.proximity * 6.0));
+  rm.rab_steps[0] = Vec2::polar(0.05, 0.7);  // one buffered step holds the whole sum
+  expect_wheels(run_behaviour(module(34, {3.9, 0}), m, rm, rng), spec_wheels(rm.attraction_sum() * 9.0 - rm.proximity * 6.0));
 }
 
 TEST(Maple, ActionsAreTheChocolateLaws) {
   ReferenceModel rm;
   rm.light = Vec2::polar(1.0, 2.0);
   rm.proximity = Vec2::polar(0.3, 0.4);
-  rm.attraction_sum = Vec2::polar(0.02, -1.0);
+  rm.rab_steps[0] = Vec2::polar(0.02, -1.0);  // one buffered step holds the whole sum
   for (int digit = 0; digit <= 5; ++digit) {
     Rng a(5), b(5);
     BehaviourMemory ma, mb;

@@ -23,7 +23,7 @@ ReferenceModel model(Vec2 light, Vec2 proximity, Vec2 attraction_sum = {}) {
   ReferenceModel rm;
   rm.light = light;
   rm.proximity = proximity;
-  rm.attraction_sum = attraction_sum;
+  rm.rab_steps[0] = attraction_sum;  // one buffered step holds the whole sum
   return rm;
 }
 

@@ -3,6 +3,7 @@
 // else gray (0.5).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 
 #include "reference_model_test_helpers.hpp"
@@ -100,7 +101,7 @@ TEST_F(RobotGroundFilter, OnlyTheLastFiveStepsCount) {
 
 TEST_F(RobotGroundFilter, KeepsTheRawReadings) {
   step({0.1, 0.2, 0.3});
-  EXPECT_EQ(rm.raw_ground, (Floor{0.1, 0.2, 0.3}));
+  EXPECT_TRUE(std::ranges::equal(rm.raw_ground, Floor{0.1, 0.2, 0.3}));
 }
 
 TEST_F(RobotGroundFilter, ResetForgetsTheHistory) {

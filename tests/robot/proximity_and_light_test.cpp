@@ -3,6 +3,7 @@
 // same angles if any l_i > 0.2, else zero.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "reference_model_test_helpers.hpp"
@@ -49,7 +50,7 @@ TEST_F(RobotVectors, ProximityReadingsAddUpAsVectors) {
   EXPECT_NEAR(rm.proximity.x, expected.x, 1e-3);
   EXPECT_NEAR(rm.proximity.y, expected.y, 1e-3);
   EXPECT_LT(rm.proximity.length(), 1.0);
-  EXPECT_EQ(rm.raw_proximity, swarm.proximity[0]);
+  EXPECT_TRUE(std::ranges::equal(rm.raw_proximity, swarm.proximity[0]));
 }
 
 TEST_F(RobotVectors, ProximityIsClippedToLengthOne) {
@@ -75,7 +76,7 @@ TEST_F(RobotVectors, LightIsAUnitVectorTowardsTheWeightedSum) {
   EXPECT_NEAR(rm.light.length(), 1.0, 1e-12);
   EXPECT_NEAR(rm.light.angle(), sum.angle(), kAngleTolerance);
   EXPECT_EQ(rm.light_value(), 1.0);
-  EXPECT_EQ(rm.raw_light, swarm.light[0]);
+  EXPECT_TRUE(std::ranges::equal(rm.raw_light, swarm.light[0]));
 }
 
 TEST_F(RobotVectors, OneReadingAboveTwoTenthsIsEnough) {
