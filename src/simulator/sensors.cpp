@@ -252,26 +252,41 @@ void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, S
   const std::size_t stride = swarm.rab_stride();
   const double range_sq = model.rab_range * model.rab_range;
   const auto loss_threshold = static_cast<std::uint64_t>(model.rab_loss * 4294967296.0);
-  for (const RobotPair& pair : swarm.pairs) {
-    if (pair.distance_sq >= range_sq) continue;
-    // Loss is drawn first: line of sight is only worth computing for the 15 % of packets
-    // that survive, and the outcome is the same in distribution. One 64-bit draw gives both
-    // directions' 32-bit Bernoulli draws (ARGoS' resolution).
+  // Whether a pair is in range, and whether a packet survives loss, are coin tosses for the
+  // branch predictor; the pairs are therefore filtered in two branch-free passes (every
+  // index written, the count advanced only for the kept ones), in pair order as before.
+  std::uint16_t* kept = swarm.pair_scratch.data();
+  int in_range = 0;
+  for (std::size_t k = 0; k < swarm.pairs.size(); ++k) {
+    kept[in_range] = static_cast<std::uint16_t>(k);
+    in_range += swarm.pairs[k].distance_sq < range_sq ? 1 : 0;
+  }
+  // Loss is drawn first: line of sight is only worth computing for the 28 % of pairs where a
+  // packet survives, and the outcome is the same in distribution. One 64-bit draw gives both
+  // directions' 32-bit Bernoulli draws (ARGoS' resolution).
+  std::uint64_t* received = swarm.loss_scratch.data();
+  int surviving = 0;
+  for (int n = 0; n < in_range; ++n) {
     const std::uint64_t bits = rng.next();
-    const bool a_receives = (bits >> 32) >= loss_threshold;
-    const bool b_receives = (bits & 0xffffffffu) >= loss_threshold;
-    if (!a_receives && !b_receives) continue;
+    const std::uint64_t to_a = (bits >> 32) >= loss_threshold ? 1 : 0;
+    const std::uint64_t to_b = (bits & 0xffffffffu) >= loss_threshold ? 2 : 0;
+    kept[surviving] = kept[n];
+    received[surviving] = to_a | to_b;
+    surviving += (to_a | to_b) != 0 ? 1 : 0;
+  }
+  for (int n = 0; n < surviving; ++n) {
+    const RobotPair& pair = swarm.pairs[kept[n]];
     const bool visible = arena.line_of_sight_walls(swarm.position[pair.a], swarm.position[pair.b]) &&
                          no_robot_between(swarm, pair);
     if (!visible) continue;
     const double distance = std::sqrt(pair.distance_sq);
     const double range_cm = distance * 100.0 - epuck::kRabRangeOffsetCm;
     const Vec2 u = pair.delta * (1.0 / distance);  // from a towards b, world frame
-    if (a_receives) {
+    if (received[n] & 1) {
       const Vec2 h = swarm.heading[pair.a];
       swarm.rab[pair.a * stride + swarm.rab_count[pair.a]++] = {range_cm, {h.x * u.x + h.y * u.y, h.x * u.y - h.y * u.x}, pair.b};
     }
-    if (b_receives) {
+    if (received[n] & 2) {
       const Vec2 h = swarm.heading[pair.b];
       swarm.rab[pair.b * stride + swarm.rab_count[pair.b]++] = {range_cm, {-(h.x * u.x + h.y * u.y), -(h.x * u.y - h.y * u.x)}, pair.a};
     }

@@ -76,7 +76,11 @@ struct SwarmState {
   /// This tick's positions as two plain arrays, refreshed with the pairs: the line-of-sight
   /// tests scan every robot at once, and contiguous coordinates let that scan vectorise.
   std::vector<double> position_x, position_y;
-  std::vector<double> scratch;  // one value per robot, for a sensor's intermediate results
+  // Per-tick working space of the sensors, sized once: a value per robot, and a pair index
+  // and a 64-bit word per pair.
+  std::vector<double> scratch;
+  std::vector<std::uint16_t> pair_scratch;
+  std::vector<std::uint64_t> loss_scratch;
 
   void resize(int robots, int arena_leds = 0);
   std::size_t rab_stride() const { return static_cast<std::size_t>(size > 1 ? size - 1 : 1); }
