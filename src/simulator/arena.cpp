@@ -90,14 +90,6 @@ double ArenaModel::light_clearance_fraction(std::size_t light, double height) co
   return z > height ? height / z : 1.0;
 }
 
-std::size_t ArenaModel::cell_of(Vec2 p) const {
-  const double fx = (p.x - grid_origin_.x) / cell_size_, fy = (p.y - grid_origin_.y) / cell_size_;
-  if (!(fx >= 0.0 && fy >= 0.0)) return kOutside;
-  const auto cx = static_cast<std::size_t>(fx), cy = static_cast<std::size_t>(fy);
-  if (cx >= grid_w_ || cy >= grid_h_) return kOutside;
-  return cy * grid_w_ + cx;
-}
-
 bool ArenaModel::line_of_sight_walls(Vec2 p, Vec2 q) const {
   for (const std::uint16_t w : interior_walls_)
     if (walls[w].segment_entry(p, q) <= 1.0) return false;
@@ -141,13 +133,13 @@ void ArenaModel::compile() {
   }
   const double margin = 0.3;
   grid_origin_ = lo - Vec2{margin, margin};
-  grid_w_ = static_cast<std::size_t>(std::ceil((hi.x - lo.x + 2 * margin) / cell_size_));
-  grid_h_ = static_cast<std::size_t>(std::ceil((hi.y - lo.y + 2 * margin) / cell_size_));
+  grid_w_ = static_cast<std::size_t>(std::ceil((hi.x - lo.x + 2 * margin) / kCellSize));
+  grid_h_ = static_cast<std::size_t>(std::ceil((hi.y - lo.y + 2 * margin) / kCellSize));
   const std::size_t cells = grid_w_ * grid_h_;
-  const double half_diagonal = cell_size_ * std::sqrt(0.5);
+  const double half_diagonal = kCellSize * std::sqrt(0.5);
   auto cell_center = [&](std::size_t c) {
-    return grid_origin_ + Vec2{(static_cast<double>(c % grid_w_) + 0.5) * cell_size_,
-                               (static_cast<double>(c / grid_w_) + 0.5) * cell_size_};
+    return grid_origin_ + Vec2{(static_cast<double>(c % grid_w_) + 0.5) * kCellSize,
+                               (static_cast<double>(c / grid_w_) + 0.5) * kCellSize};
   };
 
   compile_floor_cells(lo, hi);

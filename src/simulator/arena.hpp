@@ -115,10 +115,19 @@ class ArenaModel {
 
  private:
   static constexpr std::size_t kOutside = static_cast<std::size_t>(-1);
-  std::size_t cell_of(Vec2 p) const;
+  // A multiplication, not a division: a point within an ulp of a cell border may land in
+  // either cell, and both cells' lists hold every wall within reach of it.
+  std::size_t cell_of(Vec2 p) const {
+    const double fx = (p.x - grid_origin_.x) * kCellsPerMetre, fy = (p.y - grid_origin_.y) * kCellsPerMetre;
+    if (!(fx >= 0.0 && fy >= 0.0)) return kOutside;
+    const auto cx = static_cast<std::size_t>(fx), cy = static_cast<std::size_t>(fy);
+    if (cx >= grid_w_ || cy >= grid_h_) return kOutside;
+    return cy * grid_w_ + cx;
+  }
 
   Vec2 grid_origin_;
-  double cell_size_ = 0.1;
+  static constexpr double kCellsPerMetre = 10.0;
+  static constexpr double kCellSize = 1.0 / kCellsPerMetre;  // m
   std::size_t grid_w_ = 0, grid_h_ = 0;
   CellLists near_;
   std::vector<CellLists> shading_;

@@ -29,8 +29,7 @@ void Physics::reset(int robots) {
     v->clear();
     v->reserve(n * (n - 1) / 2 + 8 * n);
   }
-  close_pairs_.clear();
-  close_pairs_.reserve(n * (n - 1) / 2);
+  close_pairs_.assign(n * (n - 1) / 2 + 1, {});  // one spare slot for the branch-free append
   start_.assign(n, {});
 }
 
@@ -158,16 +157,19 @@ void Physics::project_contacts(const ArenaModel& arena, SwarmState& swarm) {
   constexpr double kTouchSq = 4.0 * kRadius * kRadius;
   constexpr double kCloseSq = (2.0 * kRadius + 1e-3) * (2.0 * kRadius + 1e-3);
   constexpr double kNegligible = 1e-12;  // metres of overlap not worth another pass
-  close_pairs_.clear();
-  const std::vector<Candidate>* pairs = &pair_candidates_;
+  std::span<const Candidate> pairs = pair_candidates_;
+  std::size_t close = 0;
   for (int pass = 0; pass < kProjectionPasses; ++pass) {
     bool pushed = false;
-    for (const Candidate& c : *pairs) {
+    for (const Candidate& c : pairs) {
       Vec2& pa = swarm.position[c.a];
       Vec2& pb = swarm.position[c.b];
       const Vec2 d = pb - pa;
       const double dist2 = d.squared_length();
-      if (pass == 0 && dist2 < kCloseSq) close_pairs_.push_back(c);
+      if (pass == 0) {  // branch-free append: whether a pair is close is a coin toss
+        close_pairs_[close] = c;
+        close += dist2 < kCloseSq ? 1 : 0;
+      }
       if (dist2 >= kTouchSq || dist2 <= 0.0) continue;
       const double dist = std::sqrt(dist2);
       const double depth = 2.0 * kRadius - dist;
@@ -193,7 +195,7 @@ void Physics::project_contacts(const ArenaModel& arena, SwarmState& swarm) {
       p -= tangent * std::clamp(dot(p - start_[c.a], tangent), -grip, grip);
     }
     if (!pushed) break;
-    pairs = &close_pairs_;
+    pairs = std::span<const Candidate>(close_pairs_.data(), close);
   }
 }
 

@@ -19,6 +19,7 @@
 // solver. The drive's angular joint is treated as infinitely stiff (its limit, 1530
 // rad/s^2, is reached within one sub-step at e-puck speeds) and friction torque is
 // ignored, which only matters for a robot spinning while it touches another.
+#include <span>
 #include <vector>
 
 #include "simulator/arena.hpp"
