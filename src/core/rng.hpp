@@ -53,6 +53,24 @@ class Rng {
     --coarse_left_;
     return a + (b - a) * (chunk * 0x1.0p-21);
   }
+  /// `n` draws of coarse_uniform(a, b) into `out`, the same values in the same order, with
+  /// the generator's state kept in registers for the whole batch.
+  void coarse_uniforms(double a, double b, double* out, int n) {
+    std::uint64_t bits = coarse_bits_;
+    int left = coarse_left_;
+    const double scale = (b - a) * 0x1.0p-21;
+    for (int k = 0; k < n; ++k) {
+      if (left == 0) {
+        bits = next();
+        left = 3;
+      }
+      out[k] = a + scale * static_cast<double>(bits & 0x1fffff);
+      bits >>= 21;
+      --left;
+    }
+    coarse_bits_ = bits;
+    coarse_left_ = left;
+  }
   /// Integer uniform in [a, b) as ARGoS' Uniform(CRange<UInt32>(a, b)); returns a when b <= a.
   std::uint32_t uniform_int(std::uint32_t a, std::uint32_t b) {
     if (b <= a) return a;

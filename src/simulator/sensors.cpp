@@ -18,9 +18,6 @@ double clamp01(double v) {
   return v < 1.0 ? v : 1.0;
 }
 
-double with_uniform_noise(double v, double level, Rng& rng) {
-  return clamp01(v + rng.coarse_uniform(-level, level));
-}
 
 struct RayDirections {
   std::array<double, 8> cos{}, sin{};
@@ -144,7 +141,9 @@ void sense_proximity(const ArenaModel& arena, const RobotModel& model, SwarmStat
         if (t <= 1.0) reading[k] = std::min(reading[k], t * epuck::kProximityRange);
       }
     }
-    for (double& v : reading) v = with_uniform_noise(epuck::proximity_reading(v), model.proximity_noise, rng);
+    std::array<double, 8> noise;
+    rng.coarse_uniforms(-model.proximity_noise, model.proximity_noise, noise.data(), 8);
+    for (int k = 0; k < 8; ++k) reading[k] = clamp01(epuck::proximity_reading(reading[k]) + noise[k]);
   }
 }
 
@@ -191,7 +190,9 @@ void sense_light(const ArenaModel& arena, const RobotModel& model, SwarmState& s
         if (delta < kPi / 2.0) reading[k] += base * (1.0 - 2.0 * delta / kPi);
       }
     }
-    for (double& v : reading) v = with_uniform_noise(v, model.light_noise, rng);
+    std::array<double, 8> noise;
+    rng.coarse_uniforms(-model.light_noise, model.light_noise, noise.data(), 8);
+    for (int k = 0; k < 8; ++k) reading[k] = clamp01(reading[k] + noise[k]);
   }
 }
 
@@ -199,13 +200,15 @@ void sense_ground(const ArenaModel& arena, const RobotModel& model, SwarmState& 
   for (int i = 0; i < swarm.size; ++i) {
     const double uniform = arena.uniform_floor_gray(swarm.position[i]);
     const double c = swarm.heading[i].x, s = swarm.heading[i].y;
+    std::array<double, 3> noise;
+    rng.coarse_uniforms(-model.ground_noise, model.ground_noise, noise.data(), 3);
     for (int k = 0; k < 3; ++k) {
       double gray = uniform;
       if (gray < 0.0) {  // near a patch edge: each sensor's own point
         const Vec2 o = epuck::kGroundSensorOffsets[k];
         gray = arena.floor_gray(swarm.position[i] + Vec2{c * o.x - s * o.y, s * o.x + c * o.y});
       }
-      swarm.ground[i][k] = with_uniform_noise(gray, model.ground_noise, rng);
+      swarm.ground[i][k] = clamp01(gray + noise[k]);
     }
   }
 }

@@ -1,0 +1,45 @@
+// The run's generator: the batched coarse draws the sensors use must be the very values the
+// one-at-a-time draws give, whatever is left over from earlier calls.
+#include <gtest/gtest.h>
+
+#include <array>
+
+#include "core/rng.hpp"
+
+namespace sd {
+namespace {
+
+TEST(Rng, BatchedCoarseUniformsEqualOneAtATimeDraws) {
+  Rng single(42), batched(42);
+  // Batch sizes that start and end at every offset within a 64-bit word (3 draws per word),
+  // with full draws in between, as the sensors interleave them.
+  for (const int n : {1, 3, 8, 2, 5, 8, 3, 1, 7}) {
+    std::array<double, 8> out{};
+    batched.coarse_uniforms(-0.05, 0.05, out.data(), n);
+    for (int k = 0; k < n; ++k) ASSERT_EQ(out[static_cast<std::size_t>(k)], single.coarse_uniform(-0.05, 0.05)) << n << " " << k;
+    ASSERT_EQ(batched.next(), single.next());
+  }
+}
+
+TEST(Rng, CoarseUniformsStayInTheirIntervalAndFillIt) {
+  Rng rng(3);
+  std::array<double, 8> out{};
+  double lo = 1.0, hi = -1.0, sum = 0.0;
+  constexpr int kBatches = 20000;
+  for (int b = 0; b < kBatches; ++b) {
+    rng.coarse_uniforms(-0.5, 0.5, out.data(), 8);
+    for (const double v : out) {
+      ASSERT_GE(v, -0.5);
+      ASSERT_LT(v, 0.5);
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+      sum += v;
+    }
+  }
+  EXPECT_LT(lo, -0.499);
+  EXPECT_GT(hi, 0.499);
+  EXPECT_NEAR(sum / (8.0 * kBatches), 0.0, 0.005);  // sd of the mean: 0.29 / sqrt(160000) = 0.0007
+}
+
+}  // namespace
+}  // namespace sd
