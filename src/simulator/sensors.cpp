@@ -231,7 +231,7 @@ bool no_robot_between(SwarmState& swarm, const RobotPair& pair) {
   const double* x = swarm.position_x.data();
   const double* y = swarm.position_y.data();
   // The flags are doubles, like the coordinates, so that the loop vectorises.
-  double* near = swarm.scratch.data();
+  double* near = swarm.near_segment.data();
   double count = 0.0;
   for (int k = 0; k < swarm.size; ++k) {
     const double dx = x[k] - ax, dy = y[k] - ay, ex = x[k] - bx, ey = y[k] - by;
@@ -258,7 +258,7 @@ void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, S
   // Whether a pair is in range, and whether a packet survives loss, are coin tosses for the
   // branch predictor; the pairs are therefore filtered in two branch-free passes (every
   // index written, the count advanced only for the kept ones), in pair order as before.
-  std::uint16_t* kept = swarm.pair_scratch.data();
+  std::uint16_t* kept = swarm.rab_pairs.data();
   int in_range = 0;
   for (std::size_t k = 0; k < swarm.pairs.size(); ++k) {
     kept[in_range] = static_cast<std::uint16_t>(k);
@@ -267,7 +267,7 @@ void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, S
   // Loss is drawn first: line of sight is only worth computing for the 28 % of pairs where a
   // packet survives, and the outcome is the same in distribution. One 64-bit draw gives both
   // directions' 32-bit Bernoulli draws (ARGoS' resolution).
-  std::uint64_t* received = swarm.loss_scratch.data();
+  std::uint64_t* received = swarm.rab_receivers.data();
   int surviving = 0;
   for (int n = 0; n < in_range; ++n) {
     const std::uint64_t bits = rng.next();

@@ -76,11 +76,12 @@ struct SwarmState {
   /// This tick's positions as two plain arrays, refreshed with the pairs: the line-of-sight
   /// tests scan every robot at once, and contiguous coordinates let that scan vectorise.
   std::vector<double> position_x, position_y;
-  // Per-tick working space of the sensors, sized once: a value per robot, and a pair index
-  // and a 64-bit word per pair.
-  std::vector<double> scratch;
-  std::vector<std::uint16_t> pair_scratch;
-  std::vector<std::uint64_t> loss_scratch;
+  // Working space of the range-and-bearing sensor, sized once: per robot, 1 if its body is
+  // near the segment under a line-of-sight test; the pairs kept by the range and loss
+  // filters, and per kept pair who receives (bit 0: a, bit 1: b).
+  std::vector<double> near_segment;
+  std::vector<std::uint16_t> rab_pairs;
+  std::vector<std::uint64_t> rab_receivers;
 
   void resize(int robots, int arena_leds = 0);
   std::size_t rab_stride() const { return static_cast<std::size_t>(size > 1 ? size - 1 : 1); }
