@@ -21,6 +21,13 @@ const std::array<Vec2, 8> kSensorDirections = make_sensor_directions();
 
 int next_slot(int slot, int slots) { return slot + 1 == slots ? 0 : slot + 1; }
 
+/// Sum of the 8 readings, each at its sensor's reported angle (RM1.2's P and light sums).
+Vec2 directional_sum(std::span<const double, 8> readings) {
+  Vec2 sum;
+  for (std::size_t k = 0; k < 8; ++k) sum += kSensorDirections[k] * readings[k];
+  return sum;
+}
+
 }  // namespace
 
 const std::array<Vec2, 8>& sensor_directions() { return kSensorDirections; }
@@ -69,15 +76,13 @@ void ReferenceModel::update_ground() {
 }
 
 void ReferenceModel::update_proximity() {
-  Vec2 sum;
-  for (std::size_t k = 0; k < 8; ++k) sum += kSensorDirections[k] * raw_proximity[k];
+  const Vec2 sum = directional_sum(raw_proximity);
   const double length = sum.length();
   proximity = length > 1.0 ? sum * (1.0 / length) : sum;
 }
 
 void ReferenceModel::update_light() {
-  Vec2 sum;
-  for (std::size_t k = 0; k < 8; ++k) sum += kSensorDirections[k] * raw_light[k];
+  const Vec2 sum = directional_sum(raw_light);
   const bool lit = std::any_of(raw_light.begin(), raw_light.end(), [](double v) { return v > 0.2; });
   const double length = sum.length();
   light = lit && length > 0.0 ? sum * (1.0 / length) : Vec2{};

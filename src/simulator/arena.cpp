@@ -90,6 +90,21 @@ double ArenaModel::light_clearance_fraction(std::size_t light, double height) co
   return z > height ? height / z : 1.0;
 }
 
+GridFrame GridFrame::covering(Vec2 lo, Vec2 hi, double cells_per_metre) {
+  GridFrame grid;
+  grid.origin = lo;
+  grid.cells_per_metre = cells_per_metre;
+  grid.width = static_cast<std::size_t>(std::ceil((hi.x - lo.x) * cells_per_metre));
+  grid.height = static_cast<std::size_t>(std::ceil((hi.y - lo.y) * cells_per_metre));
+  return grid;
+}
+
+double GridFrame::half_diagonal() const { return cell_size() * std::sqrt(0.5); }
+
+Vec2 GridFrame::center(std::size_t cell) const {
+  return origin + Vec2{(static_cast<double>(cell % width) + 0.5) * cell_size(), (static_cast<double>(cell / width) + 0.5) * cell_size()};
+}
+
 bool ArenaModel::line_of_sight_walls(Vec2 p, Vec2 q) const {
   for (const std::uint16_t w : interior_walls_)
     if (walls[w].segment_entry(p, q) <= 1.0) return false;
@@ -131,21 +146,15 @@ void ArenaModel::compile() {
     lo = {std::min(lo.x, wall.center.x - r), std::min(lo.y, wall.center.y - r)};
     hi = {std::max(hi.x, wall.center.x + r), std::max(hi.y, wall.center.y + r)};
   }
-  const double margin = 0.3;
-  grid_origin_ = lo - Vec2{margin, margin};
-  grid_w_ = static_cast<std::size_t>(std::ceil((hi.x - lo.x + 2 * margin) / kCellSize));
-  grid_h_ = static_cast<std::size_t>(std::ceil((hi.y - lo.y + 2 * margin) / kCellSize));
-  const std::size_t cells = grid_w_ * grid_h_;
-  const double half_diagonal = kCellSize * std::sqrt(0.5);
-  auto cell_center = [&](std::size_t c) {
-    return grid_origin_ + Vec2{(static_cast<double>(c % grid_w_) + 0.5) * kCellSize,
-                               (static_cast<double>(c / grid_w_) + 0.5) * kCellSize};
-  };
+  const Vec2 margin{0.3, 0.3};
+  wall_grid_ = GridFrame::covering(lo - margin, hi + margin, 10.0);
+  const std::size_t cells = wall_grid_.cells();
+  const double half_diagonal = wall_grid_.half_diagonal();
 
   compile_floor_cells(lo, hi);
 
   near_ = build_lists(cells, walls.size(), [&](std::size_t c, std::size_t w) {
-    return walls[w].distance(cell_center(c), nullptr) <= kWallReach + half_diagonal;
+    return walls[w].distance(wall_grid_.center(c), nullptr) <= kWallReach + half_diagonal;
   });
 
   // A ray rising from p towards a light clears a wall of height H after the fraction
@@ -155,7 +164,7 @@ void ArenaModel::compile() {
   for (std::size_t l = 0; l < lights.size(); ++l) {
     const Vec2 target = lights[l].position.xy();
     shading_.push_back(build_lists(cells, walls.size(), [&](std::size_t c, std::size_t w) {
-      const Vec2 p = cell_center(c);
+      const Vec2 p = wall_grid_.center(c);
       const double t = light_clearance_fraction(l, walls[w].height);
       return distance_to_segment(walls[w].center, p, p + (target - p) * t) <= half_diagonal + walls[w].bounding_radius();
     }));
@@ -168,22 +177,18 @@ void ArenaModel::compile_floor_cells(Vec2 lo, Vec2 hi) {
     lo = {std::min(lo.x, plo.x), std::min(lo.y, plo.y)};
     hi = {std::max(hi.x, phi.x), std::max(hi.y, phi.y)};
   }
-  const double cell = 1.0 / kFloorCellsPerMetre;
-  floor_origin_ = lo;
-  floor_w_ = static_cast<std::size_t>(std::ceil((hi.x - lo.x) * kFloorCellsPerMetre));
-  floor_h_ = static_cast<std::size_t>(std::ceil((hi.y - lo.y) * kFloorCellsPerMetre));
-  floor_cell_gray_.assign(floor_w_ * floor_h_, -1.0);
+  floor_grid_ = GridFrame::covering(lo, hi, 50.0);
+  floor_cell_gray_.assign(floor_grid_.cells(), -1.0);
   // A cell is uniform when every patch edge is further from its centre than its half-diagonal
   // plus the sensors' reach: then each patch contains all of the neighbourhood or none of it,
   // and the first match (hence the gray) is the same everywhere in it.
-  const double clearance = cell * std::sqrt(0.5) + kUniformFloorReach + 1e-9;
-  for (std::size_t cy = 0; cy < floor_h_; ++cy)
-    for (std::size_t cx = 0; cx < floor_w_; ++cx) {
-      const Vec2 c = floor_origin_ + Vec2{(static_cast<double>(cx) + 0.5) * cell, (static_cast<double>(cy) + 0.5) * cell};
-      const bool uniform = std::all_of(floor_patches.begin(), floor_patches.end(),
-                                       [&](const FloorPatch& patch) { return patch.region.boundary_distance(c) > clearance; });
-      if (uniform) floor_cell_gray_[cy * floor_w_ + cx] = floor_gray(c);
-    }
+  const double clearance = floor_grid_.half_diagonal() + kUniformFloorReach + 1e-9;
+  for (std::size_t cell = 0; cell < floor_grid_.cells(); ++cell) {
+    const Vec2 c = floor_grid_.center(cell);
+    const bool uniform = std::all_of(floor_patches.begin(), floor_patches.end(),
+                                     [&](const FloorPatch& patch) { return patch.region.boundary_distance(c) > clearance; });
+    if (uniform) floor_cell_gray_[cell] = floor_gray(c);
+  }
 }
 
 }  // namespace sd

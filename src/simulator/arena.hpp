@@ -63,6 +63,32 @@ struct CellLists {
   }
 };
 
+/// A square grid laid over the arena, for look-up tables: the cell a point falls in, and
+/// cell centres. Cells are numbered row by row.
+struct GridFrame {
+  static constexpr std::size_t kOutside = static_cast<std::size_t>(-1);
+  Vec2 origin;
+  double cells_per_metre = 1.0;
+  std::size_t width = 0, height = 0;
+
+  /// The grid of cells of 1 / cells_per_metre that covers the box [lo, hi].
+  static GridFrame covering(Vec2 lo, Vec2 hi, double cells_per_metre);
+  std::size_t cells() const { return width * height; }
+  double cell_size() const { return 1.0 / cells_per_metre; }
+  double half_diagonal() const;
+  /// The cell of p, or kOutside. A multiplication, not a division: a point within an ulp of
+  /// a cell border may land in either cell, so every table is built to hold, in both cells,
+  /// whatever is true around such a point.
+  std::size_t cell_of(Vec2 p) const {
+    const double fx = (p.x - origin.x) * cells_per_metre, fy = (p.y - origin.y) * cells_per_metre;
+    if (!(fx >= 0.0 && fy >= 0.0)) return kOutside;
+    const auto cx = static_cast<std::size_t>(fx), cy = static_cast<std::size_t>(fy);
+    if (cx >= width || cy >= height) return kOutside;
+    return cy * width + cx;
+  }
+  Vec2 center(std::size_t cell) const;
+};
+
 class ArenaModel {
  public:
   std::vector<Wall> walls;
@@ -84,23 +110,20 @@ class ArenaModel {
   /// floor may change within that distance (then ask floor_gray point by point). Most robots
   /// are far from any patch edge, and this spares them a region test per ground sensor.
   double uniform_floor_gray(Vec2 p) const {
-    const double fx = (p.x - floor_origin_.x) * kFloorCellsPerMetre, fy = (p.y - floor_origin_.y) * kFloorCellsPerMetre;
-    if (!(fx >= 0.0 && fy >= 0.0)) return -1.0;
-    const auto cx = static_cast<std::size_t>(fx), cy = static_cast<std::size_t>(fy);
-    if (cx >= floor_w_ || cy >= floor_h_) return -1.0;
-    return floor_cell_gray_[cy * floor_w_ + cx];
+    const std::size_t c = floor_grid_.cell_of(p);
+    return c == GridFrame::kOutside ? -1.0 : floor_cell_gray_[c];
   }
   static constexpr double kUniformFloorReach = 0.032;  // m: the ground sensors are 3.13 cm from the centre
 
   /// Walls within kWallReach of p (contacts and proximity rays).
   std::span<const std::uint16_t> walls_near(Vec2 p) const {
-    const std::size_t c = cell_of(p);
-    return c == kOutside ? std::span<const std::uint16_t>(all_walls_) : near_.at(c);
+    const std::size_t c = wall_grid_.cell_of(p);
+    return c == GridFrame::kOutside ? std::span<const std::uint16_t>(all_walls_) : near_.at(c);
   }
   /// Walls that may block the rising ray from ground point p to light `light`.
   std::span<const std::uint16_t> walls_shading(std::size_t light, Vec2 p) const {
-    const std::size_t c = cell_of(p);
-    return c == kOutside ? std::span<const std::uint16_t>(all_walls_) : shading_[light].at(c);
+    const std::size_t c = wall_grid_.cell_of(p);
+    return c == GridFrame::kOutside ? std::span<const std::uint16_t>(all_walls_) : shading_[light].at(c);
   }
   /// True if no wall separates p from q (walls that enclose every robot are skipped: a
   /// segment between two robots can never cross them).
@@ -114,29 +137,13 @@ class ArenaModel {
   static constexpr double kWallReach = 0.16;  // m: body radius + proximity reach + motion margin
 
  private:
-  static constexpr std::size_t kOutside = static_cast<std::size_t>(-1);
-  // A multiplication, not a division: a point within an ulp of a cell border may land in
-  // either cell, and both cells' lists hold every wall within reach of it.
-  std::size_t cell_of(Vec2 p) const {
-    const double fx = (p.x - grid_origin_.x) * kCellsPerMetre, fy = (p.y - grid_origin_.y) * kCellsPerMetre;
-    if (!(fx >= 0.0 && fy >= 0.0)) return kOutside;
-    const auto cx = static_cast<std::size_t>(fx), cy = static_cast<std::size_t>(fy);
-    if (cx >= grid_w_ || cy >= grid_h_) return kOutside;
-    return cy * grid_w_ + cx;
-  }
-
-  Vec2 grid_origin_;
-  static constexpr double kCellsPerMetre = 10.0;
-  static constexpr double kCellSize = 1.0 / kCellsPerMetre;  // m
-  std::size_t grid_w_ = 0, grid_h_ = 0;
+  GridFrame wall_grid_;  // 10 cm cells: the wall lists below
   CellLists near_;
   std::vector<CellLists> shading_;
   std::vector<std::uint16_t> all_walls_;
   std::vector<std::uint16_t> interior_walls_;  // walls that can separate two robots
 
-  static constexpr double kFloorCellsPerMetre = 50.0;
-  Vec2 floor_origin_;
-  std::size_t floor_w_ = 0, floor_h_ = 0;
+  GridFrame floor_grid_;  // 2 cm cells
   std::vector<double> floor_cell_gray_;  // per cell: the gray of its whole neighbourhood, or -1
   void compile_floor_cells(Vec2 lo, Vec2 hi);
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include "simulator/epuck.hpp"
 
@@ -18,6 +19,13 @@ double clamp01(double v) {
   return v < 1.0 ? v : 1.0;
 }
 
+/// Adds uniform noise in [-level, level) to each reading and clamps it to [0, 1] (the
+/// e-puck's proximity, light and ground sensors). Up to 8 readings, drawn as one batch.
+void add_uniform_noise(std::span<double> readings, double level, Rng& rng) {
+  std::array<double, 8> noise;
+  rng.coarse_uniforms(-level, level, noise.data(), static_cast<int>(readings.size()));
+  for (std::size_t k = 0; k < readings.size(); ++k) readings[k] = clamp01(readings[k] + noise[k]);
+}
 
 struct RayDirections {
   std::array<double, 8> cos{}, sin{};
@@ -141,9 +149,8 @@ void sense_proximity(const ArenaModel& arena, const RobotModel& model, SwarmStat
         if (t <= 1.0) reading[k] = std::min(reading[k], t * epuck::kProximityRange);
       }
     }
-    std::array<double, 8> noise;
-    rng.coarse_uniforms(-model.proximity_noise, model.proximity_noise, noise.data(), 8);
-    for (int k = 0; k < 8; ++k) reading[k] = clamp01(epuck::proximity_reading(reading[k]) + noise[k]);
+    for (double& v : reading) v = epuck::proximity_reading(v);
+    add_uniform_noise(reading, model.proximity_noise, rng);
   }
 }
 
@@ -190,9 +197,7 @@ void sense_light(const ArenaModel& arena, const RobotModel& model, SwarmState& s
         if (delta < kPi / 2.0) reading[k] += base * (1.0 - 2.0 * delta / kPi);
       }
     }
-    std::array<double, 8> noise;
-    rng.coarse_uniforms(-model.light_noise, model.light_noise, noise.data(), 8);
-    for (int k = 0; k < 8; ++k) reading[k] = clamp01(reading[k] + noise[k]);
+    add_uniform_noise(reading, model.light_noise, rng);
   }
 }
 
@@ -200,16 +205,15 @@ void sense_ground(const ArenaModel& arena, const RobotModel& model, SwarmState& 
   for (int i = 0; i < swarm.size; ++i) {
     const double uniform = arena.uniform_floor_gray(swarm.position[i]);
     const double c = swarm.heading[i].x, s = swarm.heading[i].y;
-    std::array<double, 3> noise;
-    rng.coarse_uniforms(-model.ground_noise, model.ground_noise, noise.data(), 3);
     for (int k = 0; k < 3; ++k) {
       double gray = uniform;
       if (gray < 0.0) {  // near a patch edge: each sensor's own point
         const Vec2 o = epuck::kGroundSensorOffsets[k];
         gray = arena.floor_gray(swarm.position[i] + Vec2{c * o.x - s * o.y, s * o.x + c * o.y});
       }
-      swarm.ground[i][k] = clamp01(gray + noise[k]);
+      swarm.ground[i][k] = gray;
     }
+    add_uniform_noise(swarm.ground[i], model.ground_noise, rng);
   }
 }
 
