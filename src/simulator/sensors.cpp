@@ -48,18 +48,6 @@ int bracketing_ray(Vec2 v) {
   return x < 0.0 ? (-y <= -x ? 4 : 5) : (-y >= x ? 6 : 7);
 }
 
-/// True if the segment a->b passes within `radius` of c.
-bool segment_hits_disc(Vec2 a, Vec2 b, Vec2 c, double radius) {
-  if (c.x < std::min(a.x, b.x) - radius || c.x > std::max(a.x, b.x) + radius || c.y < std::min(a.y, b.y) - radius ||
-      c.y > std::max(a.y, b.y) + radius)
-    return false;
-  const Vec2 ab = b - a;
-  const double len2 = ab.squared_length();
-  double t = len2 > 0.0 ? dot(c - a, ab) / len2 : 0.0;
-  t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
-  return (a + ab * t - c).squared_length() < radius * radius;
-}
-
 }  // namespace
 
 double ray_disc_entry(Vec2 origin, Vec2 direction, Vec2 center, double radius) {
@@ -221,35 +209,27 @@ namespace {
 
 /// True if no other robot's body touches the segment between the two robots of `pair`. The
 /// RAB ray runs at 5.2 cm, below every body's top, so any body on it blocks the packet.
-bool no_robot_between(SwarmState& swarm, const RobotPair& pair) {
-  // A body touching the segment lies within r of the line through a and b (a cross product,
-  // slightly loose so that rounding never hides a body the exact test would see) and closer
-  // than |ab| + r to both ends. Counting such bodies over all robots is a branch-free loop
-  // over the coordinate arrays that vectorises; a and b always count, so only a count above
-  // two calls for the exact test.
+bool no_robot_between(const SwarmState& swarm, const RobotPair& pair) {
+  // A body touches the segment a-b when its centre projects strictly inside the segment and
+  // lies within r of the line. (Its distance to an end would also do, but no body comes
+  // within r of another's centre, and the two ends themselves project onto the segment's
+  // ends, so they are not counted.) One branch-free pass over the coordinate arrays, which
+  // vectorises; the count is a double, like the coordinates, for the same reason.
   const double ax = swarm.position_x[pair.a], ay = swarm.position_y[pair.a];
-  const double bx = swarm.position_x[pair.b], by = swarm.position_y[pair.b];
-  const double reach = std::sqrt(pair.distance_sq) + kRadius;
-  const double reach_sq = reach * reach;
-  const double line_limit = kRadius * kRadius * pair.distance_sq * (1.0 + 1e-9);
+  const double abx = pair.delta.x, aby = pair.delta.y;
+  const double len2 = pair.distance_sq;
+  const double line_limit = kRadius * kRadius * len2;
   const double* x = swarm.position_x.data();
   const double* y = swarm.position_y.data();
-  // The flags are doubles, like the coordinates, so that the loop vectorises.
-  double* near = swarm.near_segment.data();
-  double count = 0.0;
+  double hits = 0.0;
   for (int k = 0; k < swarm.size; ++k) {
-    const double dx = x[k] - ax, dy = y[k] - ay, ex = x[k] - bx, ey = y[k] - by;
-    const double cross = dx * pair.delta.y - dy * pair.delta.x;
-    const double near_line = cross * cross < line_limit ? 1.0 : 0.0;
-    const double near_a = dx * dx + dy * dy < reach_sq ? near_line : 0.0;
-    near[k] = ex * ex + ey * ey < reach_sq ? near_a : 0.0;
-    count += near[k];
+    const double cx = x[k] - ax, cy = y[k] - ay;
+    const double along = cx * abx + cy * aby;
+    const double cross = cx * aby - cy * abx;
+    const double inside = along > 0.0 && along < len2 ? 1.0 : 0.0;
+    hits += cross * cross < line_limit ? inside : 0.0;
   }
-  if (count <= 2.0) return true;
-  const Vec2 pa = swarm.position[pair.a], pb = swarm.position[pair.b];
-  for (int k = 0; k < swarm.size; ++k)
-    if (near[k] != 0.0 && k != pair.a && k != pair.b && segment_hits_disc(pa, pb, swarm.position[k], kRadius)) return false;
-  return true;
+  return hits == 0.0;
 }
 
 }  // namespace

@@ -25,7 +25,6 @@ void SwarmState::resize(int robots, int arena_leds) {
   blobs.assign(n * static_cast<std::size_t>(blobs_per_robot), {});
   position_x.assign(n, 0.0);
   position_y.assign(n, 0.0);
-  near_segment.assign(n, 0.0);
   rab_pairs.assign(n * (n - 1) / 2 + 1, 0);
   rab_receivers.assign(n * (n - 1) / 2 + 1, 0);
   pairs.clear();

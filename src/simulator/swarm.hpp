@@ -76,10 +76,8 @@ struct SwarmState {
   /// This tick's positions as two plain arrays, refreshed with the pairs: the line-of-sight
   /// tests scan every robot at once, and contiguous coordinates let that scan vectorise.
   std::vector<double> position_x, position_y;
-  // Working space of the range-and-bearing sensor, sized once: per robot, 1 if its body is
-  // near the segment under a line-of-sight test; the pairs kept by the range and loss
-  // filters, and per kept pair who receives (bit 0: a, bit 1: b).
-  std::vector<double> near_segment;
+  // Working space of the range-and-bearing sensor, sized once: the pairs kept by the range
+  // and loss filters, and per kept pair who receives (bit 0: a, bit 1: b).
   std::vector<std::uint16_t> rab_pairs;
   std::vector<std::uint64_t> rab_receivers;
 
