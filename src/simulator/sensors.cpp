@@ -12,19 +12,22 @@ namespace {
 
 constexpr double kRadius = epuck::kBodyRadius;
 
-// Written as max then min so that the compiler emits maxsd/minsd: noisy readings sit on
-// either side of 0 and 1 at random, and a branch would be mispredicted half the time.
+// Noisy readings sit on either side of 0 and 1 at random, so a branch here would be
+// mispredicted half the time. GCC emits minsd for the upper bound but a compare-and-jump
+// for the lower one (signed zeros), so the lower bound is taken as (v + |v|) / 2, which is
+// max(v, 0) exactly and has no branch.
 double clamp01(double v) {
-  v = v > 0.0 ? v : 0.0;
+  v = (v + std::abs(v)) * 0.5;
   return v < 1.0 ? v : 1.0;
 }
 
 /// Adds uniform noise in [-level, level) to each reading and clamps it to [0, 1] (the
-/// e-puck's proximity, light and ground sensors). Up to 8 readings, drawn as one batch.
-void add_uniform_noise(std::span<double> readings, double level, Rng& rng) {
-  std::array<double, 8> noise;
-  rng.coarse_uniforms(-level, level, noise.data(), static_cast<int>(readings.size()));
-  for (std::size_t k = 0; k < readings.size(); ++k) readings[k] = clamp01(readings[k] + noise[k]);
+/// e-puck's proximity, light and ground sensors), drawn as one batch.
+template <std::size_t N>
+void add_uniform_noise(std::array<double, N>& readings, double level, Rng& rng) {
+  std::array<double, N> noise;
+  rng.coarse_uniforms(-level, level, noise.data(), static_cast<int>(N));
+  for (std::size_t k = 0; k < N; ++k) readings[k] = clamp01(readings[k] + noise[k]);
 }
 
 struct RayDirections {
