@@ -1,6 +1,7 @@
 #include "simulator/sensors.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <span>
 
@@ -30,6 +31,13 @@ void add_uniform_noise(std::array<double, N>& readings, double level, Rng& rng) 
   for (std::size_t k = 0; k < N; ++k) readings[k] = clamp01(readings[k] + noise[k]);
 }
 
+/// `condition ? a : b` through bit masks: GCC compiles a conditional expression between
+/// doubles into a jump, which is what must be avoided where the condition is a coin toss.
+double select(bool condition, double a, double b) {
+  const std::uint64_t mask = -static_cast<std::uint64_t>(condition);
+  return std::bit_cast<double>((std::bit_cast<std::uint64_t>(a) & mask) | (std::bit_cast<std::uint64_t>(b) & ~mask));
+}
+
 struct RayDirections {
   std::array<double, 8> cos{}, sin{};
   RayDirections() {
@@ -43,12 +51,15 @@ struct RayDirections {
 const RayDirections kRays;
 
 /// The ray k (counter-clockwise) such that a direction `v` in the robot's frame lies between
-/// rays k and k + 1 (mod 8), found without trigonometry: rotate by the first ray's angle and
-/// classify the octant.
+/// rays k and k + 1 (mod 8), found without trigonometry and without branches (the bearing
+/// of a neighbour is a coin toss for the predictor): rotate by the first ray's angle, then
+/// the half plane, the quadrant within it and the octant within that are three comparisons.
 int bracketing_ray(Vec2 v) {
   const double x = v.x * kRays.cos[0] + v.y * kRays.sin[0], y = v.y * kRays.cos[0] - v.x * kRays.sin[0];
-  if (y >= 0.0) return x >= 0.0 ? (y <= x ? 0 : 1) : (y >= -x ? 2 : 3);
-  return x < 0.0 ? (-y <= -x ? 4 : 5) : (-y >= x ? 6 : 7);
+  const int lower = y < 0.0 ? 1 : 0;
+  const int left = (x < 0.0 ? 1 : 0) ^ lower;  // after the half turn that brings y up
+  const int second = (std::abs(y) > std::abs(x) ? 1 : 0) ^ left;
+  return 4 * lower + 2 * left + second;
 }
 
 }  // namespace
@@ -95,17 +106,15 @@ void sense_proximity(const ArenaModel& arena, const RobotModel& model, SwarmStat
     // The other body, in the robot's frame: ray k starts at kRing u_k and runs along u_k.
     const Vec2 c{h.x * delta.x + h.y * delta.y, h.x * delta.y - h.y * delta.x};
     const double base = distance_sq - kRadius * kRadius + kRing * kRing;
-    auto cast = [&](int k) {
+    auto cast = [&](int k) {  // branch-free: whether a ray meets the body is a coin toss
       const double along = c.x * kRays.cos[k] + c.y * kRays.sin[k];
       const double b = kRing - along;               // (origin - centre) . u
       const double q = base - 2.0 * kRing * along;  // |origin - centre|^2 - r^2
-      if (q <= 0.0) {
-        best[k] = 0.0;  // the sensor point is inside the other body
-        return;
-      }
       const double disc = b * b - q;
-      if (disc < 0.0 || b > 0.0) return;
-      best[k] = std::min(best[k], -b - std::sqrt(disc));
+      const double entry = -b - std::sqrt((disc + std::abs(disc)) * 0.5);
+      double t = select((disc >= 0.0) & (b <= 0.0), entry, kNoHit);
+      t = select(q <= 0.0, 0.0, t);  // the sensor point is inside the other body
+      best[k] = t < best[k] ? t : best[k];
     };
     // Rays are radial, so a body seen from the centre under a half-angle below 45 degrees
     // (any body further than r sqrt 2, i.e. every body that does not overlap) can only
