@@ -63,9 +63,9 @@ void ReferenceModel::update_ground() {
   // black and white counts are kept, so the window sum is updated, not recounted.
   const auto slot = static_cast<std::size_t>(ground_slot);
   std::uint8_t black = 0, white = 0;
-  for (const double g : raw_ground) {
-    if (g < 0.03) ++black;
-    else if (g > 0.85) ++white;
+  for (const double g : raw_ground) {  // counted without branches: noisy readings
+    black = static_cast<std::uint8_t>(black + (g < 0.03 ? 1 : 0));
+    white = static_cast<std::uint8_t>(white + (g > 0.85 ? 1 : 0));
   }
   window_black += black - ground_black[slot];
   window_white += white - ground_white[slot];

@@ -3,6 +3,7 @@
 // geometry and constants. What a mission may change lives in RobotModel (robot_model.hpp).
 #include <array>
 
+#include "core/branchless.hpp"
 #include "core/geometry.hpp"
 
 namespace sd::epuck {
@@ -39,11 +40,11 @@ inline constexpr double kCameraElevation = 0.122;
 inline constexpr double kRgbLedElevation = 0.0765;
 
 /// Proximity reading of a hit at distance d (m) from the sensor point (argos3-epuck
-/// CalculateReading): a quadratic fit, 0 beyond the range, clamped to [0, 1].
+/// CalculateReading): a quadratic fit, 0 beyond the range, clamped to [0, 1]. Branch-free:
+/// whether a ray hit anything is a coin toss inside a cluster.
 inline double proximity_reading(double d) {
-  if (d > kProximityRange) return 0.0;
   const double v = 298.701 * d * d - 36.8961 * d + 1.08212;
-  return v < 0.0 ? 0.0 : (v > 1.0 ? 1.0 : v);
+  return select(d > kProximityRange, 0.0, clamp01(v));
 }
 
 }  // namespace sd::epuck

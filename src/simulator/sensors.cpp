@@ -1,10 +1,10 @@
 #include "simulator/sensors.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <span>
 
+#include "core/branchless.hpp"
 #include "simulator/epuck.hpp"
 
 namespace sd {
@@ -13,15 +13,6 @@ namespace {
 
 constexpr double kRadius = epuck::kBodyRadius;
 
-// Noisy readings sit on either side of 0 and 1 at random, so a branch here would be
-// mispredicted half the time. GCC emits minsd for the upper bound but a compare-and-jump
-// for the lower one (signed zeros), so the lower bound is taken as (v + |v|) / 2, which is
-// max(v, 0) exactly and has no branch.
-double clamp01(double v) {
-  v = (v + std::abs(v)) * 0.5;
-  return v < 1.0 ? v : 1.0;
-}
-
 /// Adds uniform noise in [-level, level) to each reading and clamps it to [0, 1] (the
 /// e-puck's proximity, light and ground sensors), drawn as one batch.
 template <std::size_t N>
@@ -29,13 +20,6 @@ void add_uniform_noise(std::array<double, N>& readings, double level, Rng& rng) 
   std::array<double, N> noise;
   rng.coarse_uniforms(-level, level, noise.data(), static_cast<int>(N));
   for (std::size_t k = 0; k < N; ++k) readings[k] = clamp01(readings[k] + noise[k]);
-}
-
-/// `condition ? a : b` through bit masks: GCC compiles a conditional expression between
-/// doubles into a jump, which is what must be avoided where the condition is a coin toss.
-double select(bool condition, double a, double b) {
-  const std::uint64_t mask = -static_cast<std::uint64_t>(condition);
-  return std::bit_cast<double>((std::bit_cast<std::uint64_t>(a) & mask) | (std::bit_cast<std::uint64_t>(b) & ~mask));
 }
 
 struct RayDirections {
@@ -111,7 +95,7 @@ void sense_proximity(const ArenaModel& arena, const RobotModel& model, SwarmStat
       const double b = kRing - along;               // (origin - centre) . u
       const double q = base - 2.0 * kRing * along;  // |origin - centre|^2 - r^2
       const double disc = b * b - q;
-      const double entry = -b - std::sqrt((disc + std::abs(disc)) * 0.5);
+      const double entry = -b - std::sqrt(max0(disc));
       double t = select((disc >= 0.0) & (b <= 0.0), entry, kNoHit);
       t = select(q <= 0.0, 0.0, t);  // the sensor point is inside the other body
       best[k] = t < best[k] ? t : best[k];
