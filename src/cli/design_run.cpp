@@ -102,6 +102,9 @@ PreparedDesign prepare_resume(const std::filesystem::path& folder, bool allow_fi
   } catch (const MissionError& e) {
     throw DesignFolderError("the mission of the design in " + d.folder.string() + " cannot be loaded: " + e.what());
   }
+  if (!meta.mission_digest.empty() && meta.mission_digest != d.mission.digest)
+    throw DesignFolderError("the mission " + meta.mission + " has changed since the design in " + d.folder.string() +
+                            " started, and resuming would mix runs of two missions; restore it, or start a new design");
   try {
     d.choice = design::resolve_design_space(design::request_from_text(meta.architectures, meta.flavours));
   } catch (const std::invalid_argument& e) {
@@ -127,7 +130,7 @@ DesignReport run_prepared_design(PreparedDesign& d, const RunOptions& options) {
     if (d.resuming) return storage::DesignStore::open(d.folder);
     storage::DesignMeta meta{d.mission_reference, std::string(direction_name(d.mission.objective.direction)),
                              d.options.max_experiments, d.choice.architectures_text(), d.choice.flavours_text(),
-                             d.options.seed, fingerprint(*d.space, d.options)};
+                             d.options.seed, fingerprint(*d.space, d.options), d.mission.digest};
     return storage::DesignStore::create(d.folder, meta);
   }();
 

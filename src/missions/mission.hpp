@@ -48,6 +48,10 @@ struct Mission {
   std::string origin;          // the AutoMoDe flavour that introduced it
   std::string description;
   std::string source;          // file it was read from, or "built-in"
+  /// Digest of what the runs depend on: the document less its title, origin and
+  /// description. A design records it, so that a resumed design can tell that its mission
+  /// file has been edited in the meantime.
+  std::string digest;
   double duration_s = 120.0;
   int ticks = 1200;
   int robots = 20;

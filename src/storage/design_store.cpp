@@ -142,6 +142,7 @@ DesignStore DesignStore::create(const std::filesystem::path& folder, const Desig
   set("flavours", meta.flavours);
   set("seed", std::to_string(meta.seed));
   set("fingerprint", meta.fingerprint);
+  set("mission_digest", meta.mission_digest);
   set("created_at", std::to_string(std::time(nullptr)));
   t.commit();
   store.meta_ = meta;
@@ -184,6 +185,8 @@ void DesignStore::read_meta() {
   meta_.flavours = meta_value(db, "flavours");
   meta_.seed = static_cast<std::uint64_t>(std::stoull(meta_value(db, "seed")));
   meta_.fingerprint = meta_value(db, "fingerprint");
+  auto digest = db.prepare("SELECT value FROM meta WHERE key = 'mission_digest'");
+  meta_.mission_digest = digest.step() ? digest.text(0) : "";  // absent in older designs
   auto step = db.prepare("SELECT step FROM checkpoint WHERE id = 1");
   step_ = step.step() ? step.integer(0) : 0;
   auto elites = db.prepare("SELECT count(DISTINCT iteration) FROM elites");

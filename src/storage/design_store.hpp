@@ -46,6 +46,7 @@ struct DesignMeta {
   std::string flavours;       // "chocolate"
   std::uint64_t seed = 0;
   std::string fingerprint;    // IteratedRace::fingerprint(): parameter space and options
+  std::string mission_digest; // Mission::digest; empty for designs made before it was kept
 };
 
 class DesignStore {

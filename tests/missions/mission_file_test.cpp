@@ -72,6 +72,21 @@ TEST(MissionFile, AValidUserMissionLoads) {
   EXPECT_EQ(m.objective.direction, Direction::Minimize);
 }
 
+TEST(MissionFile, TheDigestFollowsWhatTheRunsDependOnAndNothingElse) {
+  const std::string digest = parse_mission(kValid, "test").digest;
+  EXPECT_EQ(digest.size(), 16u);
+  // Layout, comments, key order and the descriptive fields leave it alone ...
+  const std::string described =
+      replace(replace(kValid, "\"name\": \"tiny\",", "// a comment\n\"title\": \"Tiny\", \"description\": \"d\", \"name\":   \"tiny\","),
+              "\"robots\": 2", "\"robots\":2");
+  EXPECT_EQ(parse_mission(described, "elsewhere").digest, digest);
+  // ... whatever changes a run changes it.
+  EXPECT_NE(parse_mission(replace(kValid, "\"robots\": 2", "\"robots\": 3"), "test").digest, digest);
+  EXPECT_NE(parse_mission(replace(kValid, "\"duration\": 10", "\"duration\": 11"), "test").digest, digest);
+  EXPECT_NE(parse_mission(replace(kValid, "\"minimize\"", "\"maximize\""), "test").digest, digest);
+  EXPECT_NE(load_mission("aac").digest, digest);
+}
+
 TEST(MissionFile, EveryMalformedFieldIsNamed) {
   expect_error("{", "not valid JSON");
   expect_error(replace(kValid, "\"duration\": 10", "\"duration\": -5"), "duration: must be positive");

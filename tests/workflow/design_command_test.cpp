@@ -4,6 +4,8 @@
 #include <signal.h>
 
 #include <fstream>
+#include <regex>
+#include <sstream>
 
 #include "storage/sqlite.hpp"
 #include "workflow/design_helpers.hpp"
@@ -91,6 +93,20 @@ TEST_F(design_command, FoldersThatHoldNoResumableDesignAreRefused) {
   storage::Database(finished / "design.db").execute("UPDATE meta SET value = '1' WHERE key = 'format_version'");
   storage::Database(finished / "design.db").execute("UPDATE checkpoint SET state = '{\"truncated\": ' WHERE id = 1");
   expect_error(run({"design", "--resume", finished.string()}), 1, "cannot be read");
+}
+
+TEST_F(design_command, AMissionFileEditedSinceTheDesignStartedIsRefused) {
+  const auto folder = scratch() / "edited";
+  kill_after(design_args("edited", 1100, 4, 2), folder, 3);
+  std::stringstream original;
+  original << std::ifstream(mission_).rdbuf();
+  std::ofstream(mission_) << std::regex_replace(original.str(), std::regex("\"duration\": *[0-9.]+"), "\"duration\": 12");
+  expect_error(run({"design", "--resume", folder.string()}), 1, "has changed since the design");
+  // A new description changes no run, so the design goes on.
+  std::ofstream(mission_) << std::regex_replace(original.str(), std::regex("\"description\": *\"[^\"]*\""),
+                                                "\"description\": \"the same mission, described anew\"");
+  const std::string resumed = run_ok({"design", "--resume", folder.string(), "--json"});
+  EXPECT_TRUE(nlohmann::json::parse(resumed).at("resumed").get<bool>());
 }
 
 TEST_F(design_command, BadRequestsGetOneLineErrors) {
