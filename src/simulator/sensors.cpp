@@ -61,8 +61,8 @@ double ray_disc_entry(Vec2 origin, Vec2 direction, Vec2 center, double radius) {
 void update_pairs(SwarmState& swarm) {
   constexpr double kCloseSq = kProximityPairRange * kProximityPairRange;
   for (int i = 0; i < swarm.size; ++i) {
-    swarm.position_x[i] = swarm.position[i].x;
-    swarm.position_y[i] = swarm.position[i].y;
+    swarm.sensing.position_x[i] = swarm.position[i].x;
+    swarm.sensing.position_y[i] = swarm.position[i].y;
   }
   // Whether a pair is close is a coin toss for the branch predictor inside a cluster, so
   // every index is written and the count advances only for close pairs.
@@ -71,10 +71,10 @@ void update_pairs(SwarmState& swarm) {
     RobotPair& pair = swarm.pairs[k];
     pair.delta = swarm.position[pair.b] - swarm.position[pair.a];
     pair.distance_sq = pair.delta.squared_length();
-    swarm.close_pairs[static_cast<std::size_t>(close)] = static_cast<std::uint16_t>(k);
+    swarm.sensing.close_pairs[static_cast<std::size_t>(close)] = static_cast<std::uint16_t>(k);
     close += pair.distance_sq < kCloseSq ? 1 : 0;
   }
-  swarm.close_pair_count = close;
+  swarm.sensing.close_pair_count = close;
 }
 
 void sense_proximity(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng) {
@@ -111,8 +111,8 @@ void sense_proximity(const ArenaModel& arena, const RobotModel& model, SwarmStat
       for (int k = 0; k < 8; ++k) cast(k);
     }
   };
-  for (int n = 0; n < swarm.close_pair_count; ++n) {
-    const RobotPair& pair = swarm.pairs[swarm.close_pairs[static_cast<std::size_t>(n)]];
+  for (int n = 0; n < swarm.sensing.close_pair_count; ++n) {
+    const RobotPair& pair = swarm.pairs[swarm.sensing.close_pairs[static_cast<std::size_t>(n)]];
     if (swarm.demand[pair.a] & SwarmState::kDemandProximity) cast_towards(pair.a, pair.delta, pair.distance_sq);
     if (swarm.demand[pair.b] & SwarmState::kDemandProximity) cast_towards(pair.b, -pair.delta, pair.distance_sq);
   }
@@ -211,12 +211,12 @@ bool no_robot_between(const SwarmState& swarm, const RobotPair& pair) {
   // within r of another's centre, and the two ends themselves project onto the segment's
   // ends, so they are not counted.) One branch-free pass over the coordinate arrays, which
   // vectorises; the count is a double, like the coordinates, for the same reason.
-  const double ax = swarm.position_x[pair.a], ay = swarm.position_y[pair.a];
+  const double ax = swarm.sensing.position_x[pair.a], ay = swarm.sensing.position_y[pair.a];
   const double abx = pair.delta.x, aby = pair.delta.y;
   const double len2 = pair.distance_sq;
   const double line_limit = kRadius * kRadius * len2;
-  const double* x = swarm.position_x.data();
-  const double* y = swarm.position_y.data();
+  const double* x = swarm.sensing.position_x.data();
+  const double* y = swarm.sensing.position_y.data();
   double hits = 0.0;
   for (int k = 0; k < swarm.size; ++k) {
     const double cx = x[k] - ax, cy = y[k] - ay;
@@ -238,7 +238,7 @@ void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, S
   // Whether a pair is in range, and whether a packet survives loss, are coin tosses for the
   // branch predictor; the pairs are therefore filtered in two branch-free passes (every
   // index written, the count advanced only for the kept ones), in pair order as before.
-  std::uint16_t* kept = swarm.rab_pairs.data();
+  std::uint16_t* kept = swarm.sensing.rab_pairs.data();
   int in_range = 0;
   for (std::size_t k = 0; k < swarm.pairs.size(); ++k) {
     kept[in_range] = static_cast<std::uint16_t>(k);
@@ -247,7 +247,7 @@ void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, S
   // Loss is drawn first: line of sight is only worth computing for the 28 % of pairs where a
   // packet survives, and the outcome is the same in distribution. One 64-bit draw gives both
   // directions' 32-bit Bernoulli draws (ARGoS' resolution).
-  std::uint64_t* received = swarm.rab_receivers.data();
+  std::uint64_t* received = swarm.sensing.rab_receivers.data();
   int surviving = 0;
   for (int n = 0; n < in_range; ++n) {
     const std::uint64_t bits = rng.next();

@@ -16,7 +16,7 @@ struct SensorSet {
   bool proximity = true, light = true, ground = true, range_and_bearing = true, camera = false;
 };
 
-/// Refreshes the pair table, the close pairs and the position arrays (call after physics,
+/// Refreshes the pair table, and the close pairs and position arrays of swarm.sensing (call after physics,
 /// before sensing).
 void update_pairs(SwarmState& swarm);
 /// Centre distance below which a proximity ray of one robot can meet the other's body.

@@ -2,6 +2,16 @@
 
 namespace sd {
 
+void SensorWorkspace::resize(std::size_t n) {
+  const std::size_t pair_count = n * (n - 1) / 2 + 1;  // one spare slot for the branch-free appends
+  close_pairs.assign(pair_count, 0);
+  close_pair_count = 0;
+  position_x.assign(n, 0.0);
+  position_y.assign(n, 0.0);
+  rab_pairs.assign(pair_count, 0);
+  rab_receivers.assign(pair_count, 0);
+}
+
 void SwarmState::resize(int robots, int arena_leds) {
   size = robots;
   const auto n = static_cast<std::size_t>(robots);
@@ -23,13 +33,9 @@ void SwarmState::resize(int robots, int arena_leds) {
   arena_led_color.assign(static_cast<std::size_t>(arena_leds), 0);
   blobs_per_robot = static_cast<int>(rab_stride()) + arena_leds;
   blobs.assign(n * static_cast<std::size_t>(blobs_per_robot), {});
-  position_x.assign(n, 0.0);
-  position_y.assign(n, 0.0);
-  rab_pairs.assign(n * (n - 1) / 2 + 1, 0);
-  rab_receivers.assign(n * (n - 1) / 2 + 1, 0);
+  sensing.resize(n);
   pairs.clear();
   pairs.reserve(n * (n - 1) / 2);
-  close_pairs.assign(n * (n - 1) / 2 + 1, 0);  // one spare slot for the branch-free append
   for (std::size_t a = 0; a < n; ++a)
     for (std::size_t b = a + 1; b < n; ++b)
       pairs.push_back({static_cast<std::uint16_t>(a), static_cast<std::uint16_t>(b), {}, 0.0});

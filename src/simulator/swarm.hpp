@@ -35,6 +35,24 @@ struct RobotPair {
   double distance_sq;
 };
 
+/// What the sensors derive from the poses each tick (update_pairs) or use within one
+/// sensor's pass. Nothing here outlives a tick.
+struct SensorWorkspace {
+  /// Indices into SwarmState::pairs of the pairs close enough for a proximity ray to meet
+  /// the other body (the first close_pair_count entries).
+  std::vector<std::uint16_t> close_pairs;
+  int close_pair_count = 0;
+  /// The positions as two plain arrays: the line-of-sight tests scan every robot at once,
+  /// and contiguous coordinates let that scan vectorise.
+  std::vector<double> position_x, position_y;
+  /// Range and bearing: the pairs kept by the range and loss filters, and per kept pair who
+  /// receives (bit 0: a, bit 1: b).
+  std::vector<std::uint16_t> rab_pairs;
+  std::vector<std::uint64_t> rab_receivers;
+
+  void resize(std::size_t robots);
+};
+
 struct SwarmState {
   int size = 0;
 
@@ -69,17 +87,9 @@ struct SwarmState {
   enum SensorDemand : std::uint8_t { kDemandProximity = 1, kDemandLight = 2, kDemandCamera = 4, kDemandAll = 7 };
   std::vector<std::uint8_t> demand;
 
-  /// Indices into `pairs` of the pairs close enough for a proximity ray to meet the other
-  /// body (the first close_pair_count entries), refreshed with the pairs.
-  std::vector<std::uint16_t> close_pairs;
-  int close_pair_count = 0;
-  /// This tick's positions as two plain arrays, refreshed with the pairs: the line-of-sight
-  /// tests scan every robot at once, and contiguous coordinates let that scan vectorise.
-  std::vector<double> position_x, position_y;
-  // Working space of the range-and-bearing sensor, sized once: the pairs kept by the range
-  // and loss filters, and per kept pair who receives (bit 0: a, bit 1: b).
-  std::vector<std::uint16_t> rab_pairs;
-  std::vector<std::uint64_t> rab_receivers;
+  /// The sensors' working space (not state of the swarm): kept here, sized with it, so
+  /// that a tick allocates nothing.
+  SensorWorkspace sensing;
 
   void resize(int robots, int arena_leds = 0);
   std::size_t rab_stride() const { return static_cast<std::size_t>(size > 1 ? size - 1 : 1); }
