@@ -17,7 +17,7 @@ inline double select(bool condition, double a, double b) {
   return std::bit_cast<double>((std::bit_cast<std::uint64_t>(a) & mask) | (std::bit_cast<std::uint64_t>(b) & ~mask));
 }
 
-/// max(v, 0): (v + |v|) / 2 is exact for every finite v.
+/// max(v, 0): (v + |v|) / 2 is exact for every v below DBL_MAX / 2 (2v must not overflow).
 inline double max0(double v) { return (v + std::abs(v)) * 0.5; }
 
 /// v clamped to [0, 1] (minsd does the upper bound).
