@@ -4,6 +4,8 @@
 
 #include <cerrno>
 #include <fstream>
+#include <sstream>
+#include <vector>
 
 #include "storage/clock.hpp"
 #include "storage/errors.hpp"
@@ -13,7 +15,7 @@ namespace sd::storage {
 namespace {
 constexpr std::string_view kSelectDesigns =
     "SELECT id, architectures, flavours, mission, budget, seed, state, pid, path, best_config, best_score, "
-    "       created_at, updated_at, finished_at "
+    "       created_at, updated_at, finished_at, process "
     "FROM designs WHERE project_id = ? ";
 
 DesignState state_from(const std::string& text) {
@@ -39,23 +41,48 @@ Design read_design(const Statement& row, const Workspace& workspace) {
   design.created_at = row.integer(11);
   design.updated_at = row.integer(12);
   if (!row.is_null(13)) design.finished_at = row.integer(13);
+  if (!row.is_null(14)) design.process = row.text(14);
   return design;
+}
+
+/// The fields of /proc/PID/stat after the command name (which may hold spaces and
+/// parentheses): [0] is the state, [19] the start time in clock ticks since boot.
+std::vector<std::string> stat_fields(std::int64_t pid) {
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string line;
+  if (!std::getline(stat, line)) return {};
+  const auto end_of_name = line.rfind(')');
+  if (end_of_name == std::string::npos) return {};
+  std::istringstream rest(line.substr(end_of_name + 1));
+  std::vector<std::string> fields;
+  for (std::string field; rest >> field;) fields.push_back(field);
+  return fields;
 }
 
 /// A zombie (killed, not yet reaped by whoever adopted it) answers kill(pid, 0) but runs nothing.
 bool is_zombie(std::int64_t pid) {
-  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
-  std::string line;
-  if (!std::getline(stat, line)) return false;
-  const auto end_of_name = line.rfind(')');  // the name may hold spaces and parentheses
-  return end_of_name != std::string::npos && end_of_name + 2 < line.size() && line[end_of_name + 2] == 'Z';
+  const auto fields = stat_fields(pid);
+  return !fields.empty() && fields[0] == "Z";
 }
 
-/// A process that no longer exists cannot be running a design (EPERM: it exists, not ours).
-bool process_alive(std::int64_t pid) {
-  return pid > 0 && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM) && !is_zombie(pid);
+/// A process that no longer exists cannot be running a design (EPERM: it exists, not ours);
+/// nor can one whose identity differs from the one recorded: its pid has been reused. When
+/// either identity is unknown (an older row; /proc hidden), the pid alone decides.
+bool process_alive(std::int64_t pid, const std::string& recorded_identity) {
+  if (pid <= 0 || !(::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM) || is_zombie(pid)) return false;
+  if (recorded_identity.empty()) return true;
+  const std::string identity = process_identity(pid);
+  return identity.empty() || identity == recorded_identity;
 }
 }  // namespace
+
+std::string process_identity(std::int64_t pid) {
+  std::ifstream boot("/proc/sys/kernel/random/boot_id");
+  std::string boot_id;
+  const auto fields = stat_fields(pid);
+  if (!std::getline(boot, boot_id) || fields.size() < 20) return "";
+  return boot_id + "/" + fields[19];
+}
 
 std::string to_string(DesignState state) {
   switch (state) {
@@ -72,10 +99,10 @@ Designs::Designs(Workspace& workspace, Project project) : workspace_(workspace),
 void Designs::mark_dead_designs_interrupted() {
   Database& db = workspace_.database();
   std::vector<std::int64_t> dead;  // collected first: no updates while the query is open
-  auto running = db.prepare("SELECT id, pid FROM designs WHERE project_id = ? AND state = 'running'");
+  auto running = db.prepare("SELECT id, pid, coalesce(process, '') FROM designs WHERE project_id = ? AND state = 'running'");
   running.bind(1, project_.id);
   while (running.step())
-    if (!process_alive(running.integer(1))) dead.push_back(running.integer(0));
+    if (!process_alive(running.integer(1), running.text(2))) dead.push_back(running.integer(0));
   for (const std::int64_t id : dead)
     db.prepare("UPDATE designs SET state = 'interrupted', updated_at = ? WHERE id = ? AND state = 'running'")
         .bind(1, unix_now()).bind(2, id).run();
@@ -100,11 +127,11 @@ Design Designs::start(const DesignRequest& request) {
 
   const std::int64_t now = unix_now();
   const auto project_folder = std::filesystem::relative(project_.folder, workspace_.home());
-  db.prepare("INSERT INTO designs (project_id, architectures, flavours, mission, budget, seed, pid, path, created_at, "
-             "updated_at) VALUES (?, ?, ?, ?, ?, ?, ?, '', ?, ?)")
+  db.prepare("INSERT INTO designs (project_id, architectures, flavours, mission, budget, seed, pid, process, path, "
+             "created_at, updated_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, '', ?, ?)")
       .bind(1, project_.id).bind(2, request.architectures).bind(3, request.flavours).bind(4, *project_.mission)
       .bind(5, *project_.budget).bind(6, static_cast<std::int64_t>(request.seed)).bind(7, request.pid)
-      .bind(8, now).bind(9, now).run();
+      .bind(8, process_identity(request.pid)).bind(9, now).bind(10, now).run();
   const std::int64_t id = db.last_insert_id();
   const auto folder = project_folder / "designs" / std::to_string(id);
   db.prepare("UPDATE designs SET path = ? WHERE id = ?").bind(1, folder.string()).bind(2, id).run();
@@ -131,15 +158,15 @@ Design Designs::resume(std::int64_t design_id, int pid) {
   if (running.step())
     throw Conflict("design " + std::to_string(running.integer(0)) + " of project " + project_.name + " is still running");
   set_state(design_id, DesignState::running, "('interrupted', 'failed')");
-  db.prepare("UPDATE designs SET pid = ? WHERE id = ?").bind(1, pid).bind(2, design_id).run();
+  db.prepare("UPDATE designs SET pid = ?, process = ? WHERE id = ?").bind(1, pid).bind(2, process_identity(pid)).bind(3, design_id).run();
   transaction.commit();
   return get(design_id);
 }
 
 void Designs::set_pid(std::int64_t design_id, int pid) {
   workspace_.database()
-      .prepare("UPDATE designs SET pid = ?, updated_at = ? WHERE id = ? AND project_id = ? AND state = 'running'")
-      .bind(1, pid).bind(2, unix_now()).bind(3, design_id).bind(4, project_.id).run();
+      .prepare("UPDATE designs SET pid = ?, process = ?, updated_at = ? WHERE id = ? AND project_id = ? AND state = 'running'")
+      .bind(1, pid).bind(2, process_identity(pid)).bind(3, unix_now()).bind(4, design_id).bind(5, project_.id).run();
 }
 
 void Designs::finish(std::int64_t design_id, const std::string& best_config, double best_score) {
@@ -172,7 +199,8 @@ std::optional<Design> Designs::latest() {
   if (!query.step()) return std::nullopt;
   Design design = read_design(query, workspace_);
   // Reading must not need the write lock: report a dead "running" design as interrupted.
-  if (design.state == DesignState::running && !process_alive(design.pid)) design.state = DesignState::interrupted;
+  if (design.state == DesignState::running && !process_alive(design.pid, design.process))
+    design.state = DesignState::interrupted;
   return design;
 }
 

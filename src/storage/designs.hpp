@@ -14,6 +14,11 @@
 namespace sd::storage {
 
 enum class DesignState { running, finished, failed, interrupted };
+
+/// Who a process is, beyond its pid: this boot's id and the process's start time, so that a
+/// pid reused by another process (after a reboot, say) is not taken for the design's.
+/// Empty when /proc cannot tell.
+std::string process_identity(std::int64_t pid);
 std::string to_string(DesignState state);
 
 /// What run-design was asked for; mission and budget are copied from the project.
@@ -31,6 +36,7 @@ struct Design {
   std::uint64_t seed = 0;
   DesignState state = DesignState::running;
   int pid = 0;
+  std::string process;  // process_identity(pid) when it took the design; empty in older rows
   std::filesystem::path folder;  // absolute; holds the race data
   std::optional<std::string> best_config;
   std::optional<double> best_score;

@@ -89,6 +89,11 @@ CREATE INDEX designs_by_project ON designs(project_id, id);
 -- At most one running design per project: a second run-design fails here, atomically.
 CREATE UNIQUE INDEX one_running_design_per_project ON designs(project_id) WHERE state = 'running';
 )sql",
+    // 2: a pid alone cannot tell a design's process from one that got the same pid later
+    // (after a reboot, say), so the process's boot and start time are kept with it.
+    R"sql(
+ALTER TABLE designs ADD COLUMN process TEXT;  -- '<boot id>/<start time>'; NULL in older rows
+)sql",
 };
 
 }  // namespace

@@ -105,6 +105,31 @@ TEST_F(workflow_designs, ADeadRunningDesignDoesNotBlockANewOne) {
   EXPECT_EQ(designs.list().front().state, storage::DesignState::interrupted);
 }
 
+TEST_F(workflow_designs, APidNowHeldByAnotherProcessDoesNotKeepADesignRunning) {
+  storage::Designs designs(workspace(), project("p"));
+  const auto design = designs.start(request(::getpid()));
+  EXPECT_EQ(design.process, storage::process_identity(::getpid()));
+  EXPECT_FALSE(design.process.empty());
+  EXPECT_EQ(designs.latest()->state, storage::DesignState::running);
+  // As after a reboot: the same pid, alive, but another process (another boot, another start).
+  workspace().database().execute("UPDATE designs SET process = 'another-boot/12345' WHERE id = " + std::to_string(design.id));
+  EXPECT_EQ(designs.latest()->state, storage::DesignState::interrupted);
+  const auto fresh = designs.start(request(::getpid()));
+  EXPECT_NE(fresh.id, design.id);
+  EXPECT_EQ(designs.list().front().state, storage::DesignState::interrupted);
+  // Rows written before the identity was kept are judged by their pid alone, as before.
+  workspace().database().execute("UPDATE designs SET process = NULL WHERE id = " + std::to_string(fresh.id));
+  EXPECT_EQ(designs.latest()->state, storage::DesignState::running);
+}
+
+TEST(ProcessIdentity, NamesThisBootAndTheProcessStart) {
+  const std::string mine = storage::process_identity(::getpid());
+  EXPECT_EQ(mine, storage::process_identity(::getpid()));  // stable
+  EXPECT_NE(mine.find('/'), std::string::npos);
+  EXPECT_NE(mine, storage::process_identity(1));             // init started before us
+  EXPECT_EQ(storage::process_identity(kDeadPid), "");
+}
+
 TEST_F(workflow_designs, ClusterProjectsAndUnconfiguredProjectsCannotStartADesign) {
   storage::Projects projects(workspace(), owner());
   projects.create("remote", storage::ClusterConnection{"hpc.example.org", "al"});
