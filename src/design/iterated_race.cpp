@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <unordered_set>
 
+#include "core/fnv.hpp"
 #include "design/model.hpp"
 #include "design/race.hpp"
 #include "design/sampling.hpp"
@@ -20,25 +21,25 @@ long long ceil_div(long long a, long long b) { return (a + b - 1) / b; }
 // irace round.to.next.multiple
 long long round_to_next_multiple(long long x, long long d) { return x + d - 1 - (x - 1) % d; }
 
+/// The fingerprint's fields: strings, each followed by a separator byte, and numbers as
+/// their shortest exact decimal text.
 class Fnv {
  public:
   void add(std::string_view s) {
-    for (unsigned char ch : s) h_ = (h_ ^ ch) * 1099511628211ULL;
-    h_ = (h_ ^ 0xff) * 1099511628211ULL;  // field separator
+    f_.add(s);
+    f_.add(static_cast<unsigned char>(0xff));  // field separator
   }
   void add(double v) {
     char buf[40];
     std::snprintf(buf, sizeof buf, "%.17g", v);
     add(std::string_view(buf));
   }
-  std::string hex() const {
-    char buf[20];
-    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h_));
-    return buf;
-  }
+  std::string hex() const { return f_.hex(); }
 
  private:
-  std::uint64_t h_ = 1469598103934665603ULL;
+  // This fingerprint has always started from 1469598103934665603, the standard basis with
+  // its last digit lost; it is kept so that designs stored by earlier versions still resume.
+  Fnv1a f_{1469598103934665603ULL};
 };
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/fnv.hpp"
 #include "core/rng.hpp"
 
 namespace sd::evostick {
@@ -78,15 +79,9 @@ int generations_for_budget(std::int64_t budget, const Settings& settings) {
 }
 
 std::uint64_t weight_digest(const arlequin::Weights& weights) {
-  std::uint64_t h = 0xcbf29ce484222325ULL;
-  for (const double w : weights) {
-    const auto bits = std::bit_cast<std::uint64_t>(w);
-    for (int byte = 0; byte < 8; ++byte) {
-      h ^= (bits >> (8 * byte)) & 0xffu;
-      h *= 0x100000001b3ULL;
-    }
-  }
-  return h;
+  Fnv1a f;
+  for (const double w : weights) f.add_u64(std::bit_cast<std::uint64_t>(w));
+  return f.value();
 }
 
 Result evolve(const Mission& mission, Direction direction, Evaluator& evaluator, const Settings& settings,

@@ -4,12 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <functional>
 #include <optional>
 #include <sstream>
 
+#include "core/fnv.hpp"
 #include "missions/json_field.hpp"
 #include "missions/mission.hpp"
 #include "missions/read_shapes.hpp"
@@ -235,21 +235,13 @@ void check_swarm_fits(const Field& root, const Mission& m) {
     root.at("robots").fail(std::to_string(m.robots) + " robots do not fit in the start region");
 }
 
-/// 64-bit FNV-1a, in hex: a stable digest (the same on every build and platform) for
-/// telling documents apart, not for security.
-std::string fnv1a_hex(const std::string& text) {
-  std::uint64_t h = 0xcbf29ce484222325ull;
-  for (const unsigned char c : text) h = (h ^ c) * 0x100000001b3ull;
-  char out[17];
-  std::snprintf(out, sizeof out, "%016llx", static_cast<unsigned long long>(h));
-  return out;
-}
-
 /// The digest of the document without the fields that only describe it; keys come out
 /// sorted and without spaces, so layout and comments do not count either.
 std::string runs_digest(json document) {
   for (const char* descriptive : {"title", "origin", "description"}) document.erase(descriptive);
-  return fnv1a_hex(document.dump());
+  Fnv1a f;
+  f.add(document.dump());
+  return f.hex();
 }
 
 }  // namespace
