@@ -1,6 +1,7 @@
 #pragma once
 // Plane geometry shared by the simulator, the reference model and the modules.
 // Conventions (ARGoS): x forward / east, y left / north, angles counter-clockwise.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -29,6 +30,14 @@ struct Vec2 {
 
 constexpr double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
 constexpr double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+
+/// Distance from p to the segment a-b.
+inline double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = ab.squared_length();
+  const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return (p - (a + ab * t)).length();
+}
 
 struct Vec3 {
   double x = 0.0, y = 0.0, z = 0.0;

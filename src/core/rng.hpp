@@ -44,17 +44,12 @@ class Rng {
   /// Uniform in [a, b) with 21 random bits: three per 64-bit draw. For sensor noise, where
   /// a resolution of 5e-7 of the noise interval is far below anything a controller sees.
   double coarse_uniform(double a, double b) {
-    if (coarse_left_ == 0) {
-      coarse_bits_ = next();
-      coarse_left_ = 3;
-    }
-    const auto chunk = static_cast<double>(coarse_bits_ & 0x1fffff);
-    coarse_bits_ >>= 21;
-    --coarse_left_;
-    return a + (b - a) * (chunk * 0x1.0p-21);
+    double v;
+    coarse_uniforms(a, b, &v, 1);
+    return v;
   }
-  /// `n` draws of coarse_uniform(a, b) into `out`, the same values in the same order, with
-  /// the generator's state kept in registers for the whole batch.
+  /// `n` draws of coarse_uniform(a, b) into `out`, with the generator's state kept in
+  /// registers for the whole batch.
   void coarse_uniforms(double a, double b, double* out, int n) {
     std::uint64_t bits = coarse_bits_;
     int left = coarse_left_;

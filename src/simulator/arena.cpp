@@ -8,13 +8,6 @@ namespace sd {
 
 namespace {
 
-double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double len2 = ab.squared_length();
-  const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return (p - (a + ab * t)).length();
-}
-
 template <typename Predicate>
 CellLists build_lists(std::size_t cells, std::size_t wall_count, Predicate&& keep) {
   CellLists lists;

@@ -70,12 +70,8 @@ double Region::boundary_distance(Vec2 p) const {
     }
     case Shape::Polygon: {
       double best = std::numeric_limits<double>::infinity();
-      for (std::size_t i = 0, j = vertices.size() - 1; i < vertices.size(); j = i++) {
-        const Vec2 a = vertices[j], ab = vertices[i] - a;
-        const double len2 = ab.squared_length();
-        const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-        best = std::min(best, (p - (a + ab * t)).length());
-      }
+      for (std::size_t i = 0, j = vertices.size() - 1; i < vertices.size(); j = i++)
+        best = std::min(best, distance_to_segment(p, vertices[j], vertices[i]));
       return best;
     }
   }

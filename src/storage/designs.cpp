@@ -59,30 +59,30 @@ std::vector<std::string> stat_fields(std::int64_t pid) {
   return fields;
 }
 
-/// A zombie (killed, not yet reaped by whoever adopted it) answers kill(pid, 0) but runs nothing.
-bool is_zombie(std::int64_t pid) {
-  const auto fields = stat_fields(pid);
-  return !fields.empty() && fields[0] == "Z";
+/// Boot id and start time, from the fields of /proc/PID/stat; empty when unknown.
+std::string identity_from(const std::vector<std::string>& stat) {
+  std::ifstream boot("/proc/sys/kernel/random/boot_id");
+  std::string boot_id;
+  if (stat.size() < 20 || !std::getline(boot, boot_id)) return "";
+  return boot_id + "/" + stat[19];
 }
 
 /// A process that no longer exists cannot be running a design (EPERM: it exists, not ours);
-/// nor can one whose identity differs from the one recorded: its pid has been reused. When
-/// either identity is unknown (an older row; /proc hidden), the pid alone decides.
+/// nor can a zombie (killed, not yet reaped by whoever adopted it), which answers kill(pid, 0)
+/// but runs nothing; nor can one whose identity differs from the one recorded: its pid has
+/// been reused. When either identity is unknown (an older row; /proc hidden), the pid alone
+/// decides.
 bool process_alive(std::int64_t pid, const std::string& recorded_identity) {
-  if (pid <= 0 || !(::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM) || is_zombie(pid)) return false;
+  if (pid <= 0 || !(::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM)) return false;
+  const auto stat = stat_fields(pid);
+  if (!stat.empty() && stat[0] == "Z") return false;
   if (recorded_identity.empty()) return true;
-  const std::string identity = process_identity(pid);
+  const std::string identity = identity_from(stat);
   return identity.empty() || identity == recorded_identity;
 }
 }  // namespace
 
-std::string process_identity(std::int64_t pid) {
-  std::ifstream boot("/proc/sys/kernel/random/boot_id");
-  std::string boot_id;
-  const auto fields = stat_fields(pid);
-  if (!std::getline(boot, boot_id) || fields.size() < 20) return "";
-  return boot_id + "/" + fields[19];
-}
+std::string process_identity(std::int64_t pid) { return identity_from(stat_fields(pid)); }
 
 std::string to_string(DesignState state) {
   switch (state) {

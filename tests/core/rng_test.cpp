@@ -21,6 +21,15 @@ TEST(Rng, BatchedCoarseUniformsEqualOneAtATimeDraws) {
   }
 }
 
+TEST(Rng, CoarseUniformsTakeThreeChunksOf21BitsFromEachWord) {
+  Rng words(9), draws(9);
+  for (int w = 0; w < 4; ++w) {
+    std::uint64_t bits = words.next();
+    for (int chunk = 0; chunk < 3; ++chunk, bits >>= 21)
+      ASSERT_EQ(draws.coarse_uniform(-2.0, 2.0), -2.0 + 4.0 * 0x1.0p-21 * static_cast<double>(bits & 0x1fffff)) << w << " " << chunk;
+  }
+}
+
 TEST(Rng, CoarseUniformsStayInTheirIntervalAndFillIt) {
   Rng rng(3);
   std::array<double, 8> out{};
