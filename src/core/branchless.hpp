@@ -17,6 +17,11 @@ inline double select(bool condition, double a, double b) {
   return std::bit_cast<double>((std::bit_cast<std::uint64_t>(a) & mask) | (std::bit_cast<std::uint64_t>(b) & ~mask));
 }
 
+/// -v when `negate`, else v: flips the sign bit (exact, NaN and zeros included).
+inline double negate_if(bool negate, double v) {
+  return std::bit_cast<double>(std::bit_cast<std::uint64_t>(v) ^ (static_cast<std::uint64_t>(negate) << 63));
+}
+
 /// max(v, 0): (v + |v|) / 2 is exact for every v below DBL_MAX / 2 (2v must not overflow).
 inline double max0(double v) { return (v + std::abs(v)) * 0.5; }
 
