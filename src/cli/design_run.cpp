@@ -12,6 +12,7 @@
 #include "control/config_string.hpp"
 #include "control/describe.hpp"
 #include "design/race_log.hpp"
+#include "evaluation/results_version.hpp"
 #include "missions/catalogue.hpp"
 
 namespace sd::cli {
@@ -105,6 +106,10 @@ PreparedDesign prepare_resume(const std::filesystem::path& folder, bool allow_fi
   if (!meta.mission_digest.empty() && meta.mission_digest != d.mission.digest)
     throw DesignFolderError("the mission " + meta.mission + " has changed since the design in " + d.folder.string() +
                             " started, and resuming would mix runs of two missions; restore it, or start a new design");
+  if (meta.results_version != kResultsVersion)
+    throw DesignFolderError("the design in " + d.folder.string() + " was run by a swarmdesign whose simulations score differently (results version " +
+                            std::to_string(meta.results_version) + ", this one " + std::to_string(kResultsVersion) +
+                            "), and resuming would mix runs of two simulators; finish it with that version, or start a new design");
   try {
     d.choice = design::resolve_design_space(design::request_from_text(meta.architectures, meta.flavours));
   } catch (const std::invalid_argument& e) {
@@ -130,7 +135,7 @@ DesignReport run_prepared_design(PreparedDesign& d, const RunOptions& options) {
     if (d.resuming) return storage::DesignStore::open(d.folder);
     storage::DesignMeta meta{d.mission_reference, std::string(direction_name(d.mission.objective.direction)),
                              d.options.max_experiments, d.choice.architectures_text(), d.choice.flavours_text(),
-                             d.options.seed, fingerprint(*d.space, d.options), d.mission.digest};
+                             d.options.seed, fingerprint(*d.space, d.options), d.mission.digest, kResultsVersion};
     return storage::DesignStore::create(d.folder, meta);
   }();
 

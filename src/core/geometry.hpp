@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/math.hpp"
+
 namespace sd {
 
 inline constexpr double kPi = std::numbers::pi;
@@ -24,8 +26,11 @@ struct Vec2 {
   double length() const { return std::sqrt(x * x + y * y); }  // not hypot: 10x slower, and no overflow here
   constexpr double squared_length() const { return x * x + y * y; }
   /// atan2(y, x); the angle of the zero vector is 0 as in ARGoS.
-  double angle() const { return std::atan2(y, x); }
-  static Vec2 polar(double length, double angle) { return {length * std::cos(angle), length * std::sin(angle)}; }
+  double angle() const { return math::atan2(y, x); }
+  static Vec2 polar(double length, double angle) {
+    const math::SinCos sc = math::sincos(angle);
+    return {length * sc.cos, length * sc.sin};
+  }
 };
 
 constexpr double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }

@@ -15,8 +15,10 @@
 // until the truncation error is far below the rounding error (their coefficients are 1/n! and
 // 1/(2k+1), written as such). Accuracy: within 2 units in the last place of the correctly
 // rounded result (tests/core/math_test.cpp checks it against <cmath>).
+#include <array>
 #include <bit>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 
@@ -50,30 +52,35 @@ inline constexpr double kInvLn2 = 0x1.71547652b82fep+0;
 
 constexpr double factorial(int n) { return n <= 1 ? 1.0 : n * factorial(n - 1); }  // exact up to 18!
 
-/// sin r for |r| <= pi/4: the series up to r^17/17!; the next term is below 1e-19.
-inline double sin_kernel(double r) {
-  const double z = r * r;
-  const double p =
-      -1.0 / factorial(3) +
-      z * (1.0 / factorial(5) +
-           z * (-1.0 / factorial(7) +
-                z * (1.0 / factorial(9) +
-                     z * (-1.0 / factorial(11) +
-                          z * (1.0 / factorial(13) + z * (-1.0 / factorial(15) + z * (1.0 / factorial(17))))))));
-  return r + r * (z * p);
+/// c[0] + z (c[1] + z (c[2] + ...)), summed from the smallest term (Horner's order).
+template <std::size_t N>
+constexpr double horner(double z, const std::array<double, N>& c) {
+  double p = c[N - 1];
+  for (std::size_t i = N - 1; i-- > 0;) p = c[i] + z * p;
+  return p;
 }
 
-/// cos r for |r| <= pi/4: the series up to r^16/16!; the next term is below 3e-18.
-inline double cos_kernel(double r) {
+/// The N coefficients sign / (first + 2k)!, k = 0..N-1, with the sign alternating from -.
+template <std::size_t N>
+constexpr std::array<double, N> alternating_inverse_factorials(int first) {
+  std::array<double, N> c{};
+  for (std::size_t k = 0; k < N; ++k) c[k] = (k % 2 == 0 ? -1.0 : 1.0) / factorial(first + 2 * static_cast<int>(k));
+  return c;
+}
+
+/// sin r = r + r z (-1/3! + z/5! - ... + z^7/17!) with z = r^2, for |r| <= pi/4: the next
+/// term is below 1e-19.
+inline double sin_kernel(double r) {
+  constexpr auto kSeries = alternating_inverse_factorials<8>(3);
   const double z = r * r;
-  const double p =
-      -1.0 / factorial(2) +
-      z * (1.0 / factorial(4) +
-           z * (-1.0 / factorial(6) +
-                z * (1.0 / factorial(8) +
-                     z * (-1.0 / factorial(10) +
-                          z * (1.0 / factorial(12) + z * (-1.0 / factorial(14) + z * (1.0 / factorial(16))))))));
-  return 1.0 + z * p;
+  return r + r * (z * horner(z, kSeries));
+}
+
+/// cos r = 1 + z (-1/2! + z/4! - ... + z^7/16!), for |r| <= pi/4: the next term is below 3e-18.
+inline double cos_kernel(double r) {
+  constexpr auto kSeries = alternating_inverse_factorials<8>(2);
+  const double z = r * r;
+  return 1.0 + z * horner(z, kSeries);
 }
 
 /// atan(j/8) = kAtanHi[j] + kAtanLo[j] (computed with mpmath at 300 bits).
@@ -105,10 +112,14 @@ inline Split atan_unit(double a) {
   const double j = round_to_int(a * 8.0);
   const double c = j * 0.125;
   const double t = (a - c) / (1.0 + a * c);  // a - c is exact (Sterbenz)
+  // atan t = t + t z (-1/3 + z/5 - ... - z^6/15) with z = t^2.
+  constexpr auto kSeries = [] {
+    std::array<double, 7> series{};
+    for (std::size_t k = 0; k < series.size(); ++k) series[k] = (k % 2 == 0 ? -1.0 : 1.0) / static_cast<double>(3 + 2 * k);
+    return series;
+  }();
   const double z = t * t;
-  const double p =
-      -1.0 / 3.0 +
-      z * (1.0 / 5.0 + z * (-1.0 / 7.0 + z * (1.0 / 9.0 + z * (-1.0 / 11.0 + z * (1.0 / 13.0 + z * (-1.0 / 15.0))))));
+  const double p = horner(z, kSeries);
   const auto k = static_cast<std::size_t>(j);
   return {kAtanHi[k], kAtanLo[k] + (t + t * (z * p))};
 }
@@ -119,8 +130,9 @@ struct SinCos {
   double sin, cos;
 };
 
-/// sin x and cos x together. Accurate for |x| < 2^19 pi; beyond 2^50 (where one unit in the
-/// last place of x exceeds 2 pi, so no angle is meant) and for infinities and NaN: NaN.
+/// sin x and cos x together. Accurate for |x| < 2^19 pi; from 2^50 on (where one unit in the
+/// last place of x is a quarter of a radian: no angle is meant) and for infinities and
+/// NaN: NaN.
 inline SinCos sincos(double x) {
   using namespace detail;
   if (!(std::abs(x) < 0x1p50)) return {kNaN, kNaN};
@@ -190,13 +202,12 @@ inline double log(double x) {
   const double f = m - 1.0;  // exact
   const double s = f / (2.0 + f);
   const double z = s * s;
-  const double q =
-      2.0 / 3.0 +
-      z * (2.0 / 5.0 +
-           z * (2.0 / 7.0 +
-                z * (2.0 / 9.0 +
-                     z * (2.0 / 11.0 +
-                          z * (2.0 / 13.0 + z * (2.0 / 15.0 + z * (2.0 / 17.0 + z * (2.0 / 19.0 + z * (2.0 / 21.0)))))))));
+  constexpr auto kSeries = [] {  // 2/3, 2/5, ..., 2/21
+    std::array<double, 10> series{};
+    for (std::size_t k = 0; k < series.size(); ++k) series[k] = 2.0 / static_cast<double>(3 + 2 * k);
+    return series;
+  }();
+  const double q = horner(z, kSeries);
   const double log_m = 2.0 * s + s * (z * q);
   const auto ed = static_cast<double>(e);
   return ed * kLn2Hi + (log_m + ed * kLn2Lo);

@@ -8,8 +8,12 @@
 // written here rather than taken from <random> because the standard leaves their algorithms
 // to the library, and a score must not change with the standard library.
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <numbers>
+
+#include "core/branchless.hpp"
+#include "core/math.hpp"
 
 namespace sd {
 
@@ -20,7 +24,6 @@ class Rng {
   void reseed(std::uint64_t seed) {
     std::uint64_t x = seed;
     for (auto& s : state_) s = splitmix64(x);
-    has_spare_normal_ = false;
     coarse_left_ = 0;
   }
 
@@ -77,39 +80,42 @@ class Rng {
   }
   bool bernoulli(double p) { return uniform() < p; }
 
-  /// Standard normal, Marsaglia's polar method (one spare kept).
+  /// Standard normal by the ziggurat method (Marsaglia and Tsang 2000, 256 layers): one 64-bit
+  /// draw gives the layer (8 bits), the sign (1 bit) and the position (53 bits), and 99 % of
+  /// draws are accepted at once, without a logarithm. The layers are computed once, with
+  /// math::exp and math::log, so they are the same on every machine.
   double normal() {
-    if (has_spare_normal_) {
-      has_spare_normal_ = false;
-      return spare_normal_;
+    const Ziggurat& z = ziggurat();
+    for (;;) {
+      const std::uint64_t bits = next();
+      const std::size_t i = bits & 0xff;
+      const bool negative = (bits & 0x100) != 0;
+      const double x = static_cast<double>(bits >> 11) * 0x1.0p-53 * z.x[i];
+      if (x < z.x[i + 1]) return negate_if(negative, x);  // inside the layer's rectangle under the curve
+      if (i == 0) {  // the base layer's tail beyond r (Marsaglia 1964)
+        double a, b;
+        do {
+          a = -math::log(1.0 - uniform()) / Ziggurat::kR;
+          b = -math::log(1.0 - uniform());
+        } while (b + b < a * a);
+        return negate_if(negative, Ziggurat::kR + a);
+      }
+      // The wedge between the rectangle and the curve: accept under the density.
+      if (z.f[i] + uniform() * (z.f[i + 1] - z.f[i]) < math::exp(-0.5 * x * x)) return negate_if(negative, x);
     }
-    double u, v, s;
-    do {
-      u = 2.0 * uniform() - 1.0;
-      v = 2.0 * uniform() - 1.0;
-      s = u * u + v * v;
-    } while (s >= 1.0 || s == 0.0);
-    const double f = std::sqrt(-2.0 * std::log(s) / s);
-    spare_normal_ = v * f;
-    has_spare_normal_ = true;
-    return u * f;
   }
 
   /// The full generator state, for checkpointing a design process.
   struct State {
     std::uint64_t s[4];
-    bool has_spare;
-    double spare;
     std::uint64_t coarse_bits;
     int coarse_left;
   };
   State state() const {
-    return {{state_[0], state_[1], state_[2], state_[3]}, has_spare_normal_, spare_normal_, coarse_bits_, coarse_left_};
+    return {{state_[0], state_[1], state_[2], state_[3]}, coarse_bits_, coarse_left_};
   }
   void set_state(const State& st) {
     for (int i = 0; i < 4; ++i) state_[i] = st.s[i];
-    has_spare_normal_ = st.has_spare;
-    spare_normal_ = st.spare;
     coarse_bits_ = st.coarse_bits;
     coarse_left_ = st.coarse_left;
   }
@@ -123,9 +129,33 @@ class Rng {
     return z ^ (z >> 31);
   }
 
+  /// Layer i (0..255) spans [0, x[i]] between heights f[i] = e^(-x[i]^2/2) and f[i + 1]; all
+  /// have the same area v. Layer 0 is the rectangle under f(r) plus the tail beyond r = x[1],
+  /// so x[0] = v / f(r); x[256] = 0 is the peak.
+  struct Ziggurat {
+    static constexpr double kR = 3.654152885361009;     // r and v for 256 layers (mpmath)
+    static constexpr double kV = 0.004928673233974655;
+    double x[257], f[257];
+    Ziggurat() {
+      const double fr = math::exp(-0.5 * kR * kR);
+      x[0] = kV / fr;
+      f[0] = 0.0;
+      x[1] = kR;
+      f[1] = fr;
+      for (int i = 1; i < 255; ++i) {
+        x[i + 1] = std::sqrt(-2.0 * math::log(kV / x[i] + f[i]));
+        f[i + 1] = math::exp(-0.5 * x[i + 1] * x[i + 1]);
+      }
+      x[256] = 0.0;
+      f[256] = 1.0;
+    }
+  };
+  static const Ziggurat& ziggurat() {
+    static const Ziggurat table;
+    return table;
+  }
+
   std::uint64_t state_[4];
-  bool has_spare_normal_ = false;
-  double spare_normal_ = 0.0;
   std::uint64_t coarse_bits_ = 0;
   int coarse_left_ = 0;
 };

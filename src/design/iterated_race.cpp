@@ -1,6 +1,7 @@
 #include "design/iterated_race.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -8,6 +9,7 @@
 #include <unordered_set>
 
 #include "core/fnv.hpp"
+#include "core/math.hpp"
 #include "design/model.hpp"
 #include "design/race.hpp"
 #include "design/sampling.hpp"
@@ -46,7 +48,8 @@ class Fnv {
 
 int default_nb_iterations(std::size_t nb_variable) {
   if (nb_variable == 0) throw std::invalid_argument("the parameter space has no variable parameter");
-  return static_cast<int>(std::floor(2 + std::log2(static_cast<double>(nb_variable))));
+  // irace: floor(2 + log2(n)), which is 1 + the bit width of n, computed exactly.
+  return 1 + static_cast<int>(std::bit_width(nb_variable));
 }
 
 int nb_configurations_for(long long current_budget, int iteration, int mu, int each_test, std::size_t n_elites,
@@ -75,7 +78,7 @@ IteratedRace::IteratedRace(const ParameterSpace& space, IraceOptions options, Ex
   if (options_.n_instances == 0) throw std::invalid_argument("at least one instance is needed");
   if (!(options_.confidence > 0 && options_.confidence < 1)) throw std::invalid_argument("confidence must be in (0, 1)");
   options_.mu = std::max(options_.mu, options_.first_test);
-  if (std::isnan(options_.soft_restart_threshold)) options_.soft_restart_threshold = std::pow(10.0, -space_.digits());
+  if (std::isnan(options_.soft_restart_threshold)) options_.soft_restart_threshold = math::pow(10.0, -space_.digits());
 }
 
 std::string IteratedRace::fingerprint() const {

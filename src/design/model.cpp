@@ -5,6 +5,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "core/math.hpp"
+
 namespace sd::design {
 
 namespace {
@@ -53,8 +55,8 @@ Model update_model(const ParameterSpace& space, const std::vector<Elite>& elites
                    const Model& old, int iteration, int nb_iterations, int nb_new, bool elitist) {
   const double nb_var = nb_variable_of(space);
   const double step = static_cast<double>(iteration - 1) / static_cast<double>(nb_iterations);
-  const double shrink = std::pow(1.0 / static_cast<double>(nb_new), 1.0 / nb_var);
-  const double prob_max = std::pow(0.2, 1.0 / nb_var);
+  const double shrink = math::pow(1.0 / static_cast<double>(nb_new), 1.0 / nb_var);
+  const double prob_max = math::pow(0.2, 1.0 / nb_var);
   Model m;
   for (const Elite& e : elites) {
     const ConfigRecord& rec = store[e.id];
@@ -108,7 +110,7 @@ void restart_model(Model& model, const ParameterSpace& space, const std::vector<
         normalise(v);
       } else {
         const double init = p.type == ParamType::Ordinal ? (static_cast<double>(p.values.size()) - 1) / 2 : initial_sd(p);
-        v[0] = std::min(v[0] * std::pow(n, 2.0 / nb_var), init * std::pow(1.0 / n, 1.0 / nb_var));
+        v[0] = std::min(v[0] * math::pow(n, 2.0 / nb_var), init * math::pow(1.0 / n, 1.0 / nb_var));
       }
     }
   }

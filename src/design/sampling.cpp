@@ -8,13 +8,15 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/math.hpp"
+
 namespace sd::design {
 
 namespace {
 
 constexpr int kMaxRetries = 100;  // irace: "tried 100 times ... perhaps your constraints are too strict?"
 
-double exponential(Rng& rng, double rate) { return -std::log(1.0 - rng.uniform()) / rate; }
+double exponential(Rng& rng, double rate) { return -math::log(1.0 - rng.uniform()) / rate; }
 
 // irace numeric_value_round: integers floored (ub + 1 folds back to ub), reals to `digits`.
 double round_value(const ParameterSpace& space, const Parameter& p, double v, double upper) {
@@ -28,8 +30,8 @@ double round_value(const ParameterSpace& space, const Parameter& p, double v, do
 
 // Log transform limits (irace transform.domain): log(lb), log(ub) or log(ub + 1) for integers.
 std::pair<double, double> log_limits(const Parameter& p) {
-  const double lo = std::log(p.lower.constant);
-  const double hi = std::log(p.type == ParamType::Integer ? p.upper.constant + 1 : p.upper.constant);
+  const double lo = math::log(p.lower.constant);
+  const double hi = math::log(p.type == ParamType::Integer ? p.upper.constant + 1 : p.upper.constant);
   return {lo, hi};
 }
 
@@ -39,7 +41,7 @@ double sample_unif_numeric(const ParameterSpace& space, const Parameter& p, std:
   double v;
   if (p.log_scale) {
     const auto [lo, hi] = log_limits(p);
-    v = std::exp(lo + (hi - lo) * rng.uniform());
+    v = math::exp(lo + (hi - lo) * rng.uniform());
   } else {
     v = rng.uniform(lb, ub);
   }
@@ -57,8 +59,8 @@ double sample_norm_numeric(const ParameterSpace& space, const Parameter& p, doub
   double v;
   if (p.log_scale) {
     const auto [lo, hi] = log_limits(p);
-    const double tr_mean = (std::log(mean) - lo) / (hi - lo);
-    v = std::exp(lo + (hi - lo) * truncated_normal(rng, tr_mean, sd, 0.0, 1.0));
+    const double tr_mean = (math::log(mean) - lo) / (hi - lo);
+    v = math::exp(lo + (hi - lo) * truncated_normal(rng, tr_mean, sd, 0.0, 1.0));
   } else {
     v = truncated_normal(rng, mean, sd, lb, ub);
   }
@@ -99,26 +101,26 @@ double truncated_normal(Rng& rng, double mean, double sd, double lower, double u
       (std::isfinite(l) && std::isfinite(u) && l < 0 && u > 0 && u - l > std::sqrt(2 * std::numbers::pi))) {
     do z = rng.normal();
     while (z < l || z > u);
-  } else if (l >= 0 && u > l + two_sqrt_e / (l + std::sqrt(l * l + 4)) * std::exp((l * 2 - l * std::sqrt(l * l + 4)) / 4)) {
+  } else if (l >= 0 && u > l + two_sqrt_e / (l + std::sqrt(l * l + 4)) * math::exp((l * 2 - l * std::sqrt(l * l + 4)) / 4)) {
     const double a = (l + std::sqrt(l * l + 4)) / 2;
     for (;;) {
       z = exponential(rng, a) + l;
       const double w = rng.uniform();
-      if (w <= std::exp(-(z - a) * (z - a) / 2) && z <= u) break;
+      if (w <= math::exp(-(z - a) * (z - a) / 2) && z <= u) break;
     }
   } else if (u <= 0 &&
-             -l > -u + two_sqrt_e / (-u + std::sqrt(u * u + 4)) * std::exp((u * 2 - -u * std::sqrt(u * u + 4)) / 4)) {
+             -l > -u + two_sqrt_e / (-u + std::sqrt(u * u + 4)) * math::exp((u * 2 - -u * std::sqrt(u * u + 4)) / 4)) {
     const double a = (-u + std::sqrt(u * u + 4)) / 2;
     for (;;) {
       z = exponential(rng, a) - u;
       const double w = rng.uniform();
-      if (w <= std::exp(-(z - a) * (z - a) / 2) && z <= -l) break;
+      if (w <= math::exp(-(z - a) * (z - a) / 2) && z <= -l) break;
     }
     z = -z;
   } else {
     for (;;) {
       z = rng.uniform(l, u);
-      const double rho = l > 0 ? std::exp((l * l - z * z) / 2) : (u < 0 ? std::exp((u * u - z * z) / 2) : std::exp(-z * z / 2));
+      const double rho = l > 0 ? math::exp((l * l - z * z) / 2) : (u < 0 ? math::exp((u * u - z * z) / 2) : math::exp(-z * z / 2));
       if (rng.uniform() <= rho) break;
     }
   }

@@ -161,7 +161,7 @@ json state_to_json(const DesignState& s, bool with_history) {
     j["experiments"] = std::move(log);
   }
   j["race"] = s.race ? race_to_json(*s.race) : json(nullptr);
-  j["rng"] = {{"s", {s.rng.s[0], s.rng.s[1], s.rng.s[2], s.rng.s[3]}}, {"has_spare", s.rng.has_spare}, {"spare", s.rng.spare}};
+  j["rng"] = {{"s", {s.rng.s[0], s.rng.s[1], s.rng.s[2], s.rng.s[3]}}};
   j["finish_reason"] = s.finish_reason;
   return j;
 }
@@ -218,8 +218,6 @@ DesignState state_from_json(const json& j, std::optional<History> history) {
     if (!j.at("race").is_null()) s.race = race_from_json(j.at("race"));
     const auto& rng = j.at("rng");
     for (int i = 0; i < 4; ++i) s.rng.s[i] = rng.at("s").at(static_cast<std::size_t>(i)).get<std::uint64_t>();
-    rng.at("has_spare").get_to(s.rng.has_spare);
-    rng.at("spare").get_to(s.rng.spare);
     j.at("finish_reason").get_to(s.finish_reason);
     return s;
   } catch (const nlohmann::json::exception& e) {

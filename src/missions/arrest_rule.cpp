@@ -52,7 +52,7 @@ int apply_arrest_rule(const ArrestRule& rule, const ArenaModel& arena, SwarmStat
       if (!is_free(arena, swarm, i, p)) continue;
       swarm.position[r] = p;
       swarm.yaw[r] = yaw;
-      swarm.heading[r] = {std::cos(yaw), std::sin(yaw)};
+      swarm.heading[r] = Vec2::polar(1.0, yaw);
       swarm.velocity[r] = {};
       ++moved;
       break;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/math.hpp"
 #include "missions/json_field.hpp"
 
 namespace sd {
@@ -26,11 +27,11 @@ LedArena read_led_polygon(const Field& f, ArenaModel& arena) {
   if (leds_per_block > 16) f.at("led_spacing").fail("gives more than 16 LEDs per block");
   if (arena.walls.size() + static_cast<std::size_t>(n * m) > 60000) f.fail("too many blocks");
   const double side_length = m * l;
-  const double apothem = side_length / (2.0 * std::tan(kPi / n));
+  const double apothem = side_length / (2.0 * math::tan(kPi / n));
   for (int k = 1; k <= n; ++k) {
     const double theta = (k - 1) * kTwoPi / n;
-    const Vec2 inward{-std::cos(theta), -std::sin(theta)};
-    const Vec2 along{std::sin(theta), -std::cos(theta)};  // from block 1 towards block m is -along
+    const Vec2 inward = -Vec2::polar(1.0, theta);
+    const Vec2 along{-inward.y, inward.x};  // from block 1 towards block m is -along
     const Vec2 side_center = inward * -apothem;
     for (int j = 1; j <= m; ++j) {
       const double d = side_length / 2 - l / 2 - (j - 1) * l;

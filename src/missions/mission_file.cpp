@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/fnv.hpp"
+#include "core/math.hpp"
 #include "missions/json_field.hpp"
 #include "missions/mission.hpp"
 #include "missions/read_shapes.hpp"
@@ -60,7 +61,7 @@ void read_walls(const Field& f, Mission& m) {
       p.only({"sides", "apothem", "length", "thickness", "height", "first_angle", "omit"});
       const int sides = p.at("sides").integer_in(3, 64);
       const double apothem = p.at("apothem").positive();
-      const double length = p.positive_or("length", 2.0 * apothem * std::tan(kPi / sides));
+      const double length = p.positive_or("length", 2.0 * apothem * math::tan(kPi / sides));
       const double thickness = p.positive_or("thickness", 0.01);
       const double height = p.positive_or("height", 0.08);
       const double first = degrees_to_radians(p.number_or("first_angle", 0.0));

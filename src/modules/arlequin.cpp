@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/math.hpp"
 #include "modules/arlequin_builtin_weights.hpp"
 #include "simulator/epuck.hpp"
 
@@ -37,7 +38,7 @@ Inputs encode_inputs(const ReferenceModel& rm) {
   // The majority filter gives one value for all three sensors; the thresholds are DEMI's.
   for (std::size_t k = 0; k < 3; ++k)
     x[kGroundInput + k] = rm.ground <= 0.1 ? 0.0 : (rm.ground >= 0.95 ? 1.0 : rm.raw_ground[k]);
-  x[kNeighbourCountInput] = 1.0 - 2.0 / (1.0 + std::exp(static_cast<double>(rm.neighbours)));
+  x[kNeighbourCountInput] = 1.0 - 2.0 / (1.0 + math::exp(static_cast<double>(rm.neighbours)));
   if (const int messages = rm.buffered_messages(); messages > 0) {
     const Vec2 centre = rm.neighbour_position_sum() * (1.0 / static_cast<double>(messages));
     for (std::size_t k = 0; k < 4; ++k) x[kNeighbourDirectionInput + k] = std::max(0.0, dot(centre, kDiagonals[k]));
@@ -52,7 +53,7 @@ std::array<double, kOutputs> forward(const Weights& weights, const Inputs& input
     double sum = 0.0;
     for (std::size_t i = 0; i < static_cast<std::size_t>(kInputs); ++i)
       sum += weights[o * static_cast<std::size_t>(kInputs) + i] * inputs[i];
-    out[o] = 1.0 / (1.0 + std::exp(-kSigmoidSlope * sum));
+    out[o] = 1.0 / (1.0 + math::exp(-kSigmoidSlope * sum));
   }
   return out;
 }

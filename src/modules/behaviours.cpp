@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/math.hpp"
 #include "modules/arlequin.hpp"
 #include "simulator/epuck.hpp"
 
@@ -62,9 +63,9 @@ Actuation coconut(Vec2 stimulus, double k, const ModuleInstance& b, int exp_inde
     const double mu = prm[static_cast<std::size_t>(exp_index + 2)], rho = prm[static_cast<std::size_t>(exp_index + 3)];
     if (m.walk_steps <= 0) {
       const double u = rng.uniform();
-      const double length = mu > 1.0 && u > 0.0 ? std::pow(u, 1.0 / (1.0 - mu)) : INFINITY;
+      const double length = mu > 1.0 && u > 0.0 ? math::pow(u, 1.0 / (1.0 - mu)) : INFINITY;
       m.walk_steps = length < kMaxWalkSteps ? static_cast<std::int32_t>(std::ceil(length + 0.5)) : kMaxWalkSteps;
-      m.walk_angle = wrap_signed(2.0 * std::atan((1.0 - rho) / (1.0 + rho) * std::tan(kPi * (u - 0.5))));
+      m.walk_angle = wrap_signed(2.0 * math::atan((1.0 - rho) / (1.0 + rho) * math::tan(kPi * (u - 0.5))));
     } else {
       m.walk_steps -= 1;
     }

@@ -2,12 +2,14 @@
 
 #include <cmath>
 
+#include "core/math.hpp"
+
 namespace sd {
 
 double neighbours_probability(double xi, double eta, int neighbours) {
   // xi is stored as an integer by AutoMoDe; the difference is signed (the old unsigned
   // wrap-around is a bug we do not reproduce).
-  return 1.0 / (1.0 + std::exp(eta * (std::trunc(xi) - static_cast<double>(neighbours))));
+  return 1.0 / (1.0 + math::exp(eta * (std::trunc(xi) - static_cast<double>(neighbours))));
 }
 
 bool check_condition(const ModuleInstance& c, const ReferenceModel& rm, Rng& rng) {

@@ -23,7 +23,7 @@ CellLists build_lists(std::size_t cells, std::size_t wall_count, Predicate&& kee
 
 }  // namespace
 
-double Wall::bounding_radius() const { return std::hypot(half_length, half_thickness); }
+double Wall::bounding_radius() const { return std::sqrt(half_length * half_length + half_thickness * half_thickness); }
 
 double Wall::distance(Vec2 p, Vec2* outward_normal) const {
   const Vec2 d = p - center;

@@ -112,7 +112,7 @@ void Physics::step(const ArenaModel& arena, SwarmState& swarm) {
     swarm.angular_velocity[i] = target_angular_[i];  // the angular joint is stiff: one sub-step
     if (turn == 0.0) continue;  // heading unchanged: no trigonometry
     swarm.yaw[i] = wrap_signed(swarm.yaw[i] + turn);
-    swarm.heading[i] = {std::cos(swarm.yaw[i]), std::sin(swarm.yaw[i])};
+    swarm.heading[i] = Vec2::polar(1.0, swarm.yaw[i]);
   }
 }
 

@@ -19,7 +19,7 @@ Vec2 sample_point(const Region& region, Rng& rng) {
     }
     case Region::Shape::Rectangle: {
       const Vec2 local{rng.uniform(-region.half_size.x, region.half_size.x), rng.uniform(-region.half_size.y, region.half_size.y)};
-      const double c = std::cos(region.yaw), s = std::sin(region.yaw);
+      const auto [s, c] = math::sincos(region.yaw);
       return region.center + Vec2{c * local.x - s * local.y, s * local.x + c * local.y};
     }
     case Region::Shape::Polygon: {
@@ -53,7 +53,7 @@ void place_robots(const ArenaModel& arena, const std::function<Vec2(Rng&)>& samp
       if (free) {
         swarm.position[i] = p;
         swarm.yaw[i] = wrap_signed(yaw);
-        swarm.heading[i] = {std::cos(swarm.yaw[i]), std::sin(swarm.yaw[i])};
+        swarm.heading[i] = Vec2::polar(1.0, swarm.yaw[i]);
         placed = true;
       }
     }

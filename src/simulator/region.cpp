@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/math.hpp"
+
 namespace sd {
 
 Region Region::circle(Vec2 c, double r, bool inclusive) {
@@ -39,7 +41,7 @@ bool Region::contains_other(Vec2 p) const {
     }
     case Shape::Rectangle: {
       const Vec2 d = p - center;
-      const double c = std::cos(yaw), s = std::sin(yaw);
+      const auto [s, c] = math::sincos(yaw);
       const double lx = c * d.x + s * d.y, ly = -s * d.x + c * d.y;
       return std::abs(lx) <= half_size.x && std::abs(ly) <= half_size.y;
     }
@@ -63,7 +65,7 @@ double Region::boundary_distance(Vec2 p) const {
       return std::abs((p - center).length() - radius);
     case Shape::Rectangle: {
       const Vec2 d = p - center;
-      const double c = std::cos(yaw), s = std::sin(yaw);
+      const auto [s, c] = math::sincos(yaw);
       const double ex = std::abs(c * d.x + s * d.y) - half_size.x, ey = std::abs(-s * d.x + c * d.y) - half_size.y;
       if (ex <= 0.0 && ey <= 0.0) return std::min(-ex, -ey);
       return Vec2{std::max(ex, 0.0), std::max(ey, 0.0)}.length();
@@ -83,7 +85,8 @@ std::pair<Vec2, Vec2> Region::bounds() const {
     case Shape::Circle:
       return {center - Vec2{radius, radius}, center + Vec2{radius, radius}};
     case Shape::Rectangle: {
-      const double c = std::abs(std::cos(yaw)), s = std::abs(std::sin(yaw));
+      const math::SinCos sc = math::sincos(yaw);
+      const double c = std::abs(sc.cos), s = std::abs(sc.sin);
       const Vec2 e{c * half_size.x + s * half_size.y, s * half_size.x + c * half_size.y};
       return {center - e, center + e};
     }

@@ -5,6 +5,7 @@
 #include <span>
 
 #include "core/branchless.hpp"
+#include "core/math.hpp"
 #include "simulator/epuck.hpp"
 
 namespace sd {
@@ -27,8 +28,9 @@ struct RayDirections {
   RayDirections() {
     for (int k = 0; k < 8; ++k) {
       const double a = degrees_to_radians(epuck::kProximityFirstRayDegrees + 45.0 * k);
-      cos[k] = std::cos(a);
-      sin[k] = std::sin(a);
+      const math::SinCos sc = math::sincos(a);
+      cos[k] = sc.cos;
+      sin[k] = sc.sin;
     }
   }
 };
@@ -174,7 +176,7 @@ void sense_light(const ArenaModel& arena, const RobotModel& model, SwarmState& s
       const double dz = light.position.z;
       const double distance = std::sqrt(to_light.squared_length() + dz * dz) / light.intensity;
       if (distance > 2.5) continue;
-      const double base = std::exp(-2.0 * distance);
+      const double base = math::exp(-2.0 * distance);
       const double bearing = to_light.angle() - swarm.yaw[i];
       for (int k = 0; k < 8; ++k) {
         const double delta = std::abs(wrap_signed(bearing - epuck::kSensorAngles[k]));

@@ -143,6 +143,7 @@ DesignStore DesignStore::create(const std::filesystem::path& folder, const Desig
   set("seed", std::to_string(meta.seed));
   set("fingerprint", meta.fingerprint);
   set("mission_digest", meta.mission_digest);
+  set("results_version", std::to_string(meta.results_version));
   set("created_at", std::to_string(std::time(nullptr)));
   t.commit();
   store.meta_ = meta;
@@ -187,6 +188,8 @@ void DesignStore::read_meta() {
   meta_.fingerprint = meta_value(db, "fingerprint");
   auto digest = db.prepare("SELECT value FROM meta WHERE key = 'mission_digest'");
   meta_.mission_digest = digest.step() ? digest.text(0) : "";  // absent in older designs
+  auto results = db.prepare("SELECT value FROM meta WHERE key = 'results_version'");
+  meta_.results_version = results.step() ? static_cast<int>(to_int(results.text(0), "results_version")) : 1;  // absent before 2
   auto step = db.prepare("SELECT step FROM checkpoint WHERE id = 1");
   step_ = step.step() ? step.integer(0) : 0;
   auto elites = db.prepare("SELECT count(DISTINCT iteration) FROM elites");

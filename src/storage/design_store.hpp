@@ -47,6 +47,7 @@ struct DesignMeta {
   std::uint64_t seed = 0;
   std::string fingerprint;    // IteratedRace::fingerprint(): parameter space and options
   std::string mission_digest; // Mission::digest; empty for designs made before it was kept
+  int results_version = 1;    // kResultsVersion of the build that started it; 1 when not kept
 };
 
 class DesignStore {

@@ -2,7 +2,10 @@
 // one-at-a-time draws give, whatever is left over from earlier calls.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <vector>
 
 #include "core/rng.hpp"
 
@@ -48,6 +51,49 @@ TEST(Rng, CoarseUniformsStayInTheirIntervalAndFillIt) {
   EXPECT_LT(lo, -0.499);
   EXPECT_GT(hi, 0.499);
   EXPECT_NEAR(sum / (8.0 * kBatches), 0.0, 0.005);  // sd of the mean: 0.29 / sqrt(160000) = 0.0007
+}
+
+// The ziggurat's normals against the normal distribution: the Kolmogorov-Smirnov distance
+// over the whole line, and the frequencies of the regions each of its paths serves (the
+// layers' rectangles, the wedges, the tail beyond r = 3.654).
+TEST(Rng, ZigguratNormalsFollowTheStandardNormalDistribution) {
+  Rng rng(2024);
+  constexpr int kDraws = 400000;
+  std::vector<double> z(kDraws);
+  double sum = 0.0, sum_sq = 0.0;
+  for (double& v : z) {
+    v = rng.normal();
+    sum += v;
+    sum_sq += v * v;
+  }
+  EXPECT_NEAR(sum / kDraws, 0.0, 4.0 / std::sqrt(kDraws));
+  EXPECT_NEAR(sum_sq / kDraws, 1.0, 4.0 * std::sqrt(2.0 / kDraws));
+  std::sort(z.begin(), z.end());
+  double ks = 0.0;
+  for (int i = 0; i < kDraws; ++i) {
+    const double cdf = 0.5 * std::erfc(-z[static_cast<std::size_t>(i)] / std::sqrt(2.0));
+    ks = std::max({ks, std::abs(cdf - static_cast<double>(i) / kDraws), std::abs(cdf - static_cast<double>(i + 1) / kDraws)});
+  }
+  EXPECT_LT(ks, 1.63 / std::sqrt(kDraws));  // the 1 % critical value
+  auto beyond = [&](double t) {
+    return static_cast<double>(std::count_if(z.begin(), z.end(), [t](double v) { return std::abs(v) > t; }));
+  };
+  for (const double t : {0.5, 2.0, 3.0, 3.654152885361009, 4.0}) {
+    const double p = std::erfc(t / std::sqrt(2.0));  // P(|Z| > t)
+    EXPECT_NEAR(beyond(t), p * kDraws, 5.0 * std::sqrt(p * kDraws) + 1.0) << t;
+  }
+  EXPECT_NEAR(static_cast<double>(std::count_if(z.begin(), z.end(), [](double v) { return v < 0.0; })), kDraws / 2.0,
+              4.0 * std::sqrt(kDraws / 4.0));
+}
+
+TEST(Rng, NormalsDependOnlyOnTheGeneratorState) {
+  Rng a(5), b(5);
+  for (int i = 0; i < 1000; ++i) a.normal();
+  const Rng::State saved = a.state();
+  std::vector<double> first(100);
+  for (double& v : first) v = a.normal();
+  b.set_state(saved);
+  for (const double v : first) EXPECT_EQ(b.normal(), v);
 }
 
 }  // namespace

@@ -145,7 +145,7 @@ TEST(design_Sampling, ModelSamplesConcentrateAroundTheParent) {
   const std::vector<Elite> elites{{id, 1.0}};
   Model m = initialise_model(s, elites, store);
   for (int j = 2; j <= 6; ++j) m = update_model(s, elites, store, m, j, 6, 50, true);
-  const auto samples = sample_model(s, elites, store, m, 400, rng);
+  const auto samples = sample_model(s, elites, store, m, 2000, rng);
   int same_states = 0, same_s0 = 0;
   for (const auto& sc : samples) {
     ASSERT_EQ(sc.parent, id);
@@ -155,9 +155,11 @@ TEST(design_Sampling, ModelSamplesConcentrateAroundTheParent) {
     same_s0 += s.value_text(sc.config, *s.index_of("S0")) == "14";
   }
   // With 101 parameters the deviation shrinks slowly ((1/50)^(1/101) per iteration): NumStates
-  // is still spread (uniform would give 100 of 400), S0's probability is near the cap 0.2^(1/101).
-  EXPECT_GT(same_states, 130);
-  EXPECT_GT(same_s0, 370);
+  // is still spread (uniform would give 500 of 2000, sd 19), S0's probability is near the cap
+  // 0.2^(1/101). Over 200 generator seeds: NumStates = 2 in 726 +- 22 (lowest 667), S0 = 14 in
+  // at least 1955; the bounds sit 4 sd below the mean.
+  EXPECT_GT(same_states, 640);
+  EXPECT_GT(same_s0, 1900);
 }
 
 TEST(design_Sampling, SimilarConfigurationsTriggerSoftRestart) {

@@ -40,7 +40,7 @@ inline bool same_rng_state(const Rng& a, const Rng& b) {
   const Rng::State x = a.state(), y = b.state();
   for (int i = 0; i < 4; ++i)
     if (x.s[i] != y.s[i]) return false;
-  return x.has_spare == y.has_spare && x.coarse_left == y.coarse_left && x.coarse_bits == y.coarse_bits;
+  return x.coarse_left == y.coarse_left && x.coarse_bits == y.coarse_bits;
 }
 
 /// |observed - n p| within 5 standard deviations of a binomial count.

@@ -7,6 +7,7 @@
 #include <regex>
 #include <sstream>
 
+#include "evaluation/results_version.hpp"
 #include "storage/sqlite.hpp"
 #include "workflow/design_helpers.hpp"
 #include "workflow/workflow_fixture.hpp"
@@ -105,6 +106,23 @@ TEST_F(design_command, AMissionFileEditedSinceTheDesignStartedIsRefused) {
   // A new description changes no run, so the design goes on.
   std::ofstream(mission_) << std::regex_replace(original.str(), std::regex("\"description\": *\"[^\"]*\""),
                                                 "\"description\": \"the same mission, described anew\"");
+  const std::string resumed = run_ok({"design", "--resume", folder.string(), "--json"});
+  EXPECT_TRUE(nlohmann::json::parse(resumed).at("resumed").get<bool>());
+}
+
+TEST_F(design_command, ADesignRunByASimulatorThatScoresDifferentlyIsRefused) {
+  const auto folder = scratch() / "older";
+  kill_after(design_args("older", 1100, 4, 2), folder, 3);
+  storage::Database db(folder / "design.db");
+  const std::string current = [&] {
+    auto q = db.prepare("SELECT value FROM meta WHERE key = 'results_version'");
+    return q.step() ? q.text(0) : std::string();
+  }();
+  EXPECT_EQ(current, std::to_string(kResultsVersion));
+  // Designs made before the version was kept count as version 1.
+  db.execute("DELETE FROM meta WHERE key = 'results_version'");
+  expect_error(run({"design", "--resume", folder.string()}), 1, "results version 1, this one " + current);
+  db.execute("INSERT INTO meta (key, value) VALUES ('results_version', '" + current + "')");
   const std::string resumed = run_ok({"design", "--resume", folder.string(), "--json"});
   EXPECT_TRUE(nlohmann::json::parse(resumed).at("resumed").get<bool>());
 }
