@@ -1,20 +1,26 @@
 // `swarmdesign evostick`: neuro-evolution of the Arlequin perceptron, either one Arlequin
 // module against its training measure (--module) or the EvoStick baseline design method on a
-// mission (--mission). Settings and their defaults: src/evostick/evolution.hpp.
+// mission (--mission); --state FILE keeps its state at every generation and --resume FILE
+// continues it after a kill. Settings and their defaults: src/evostick/evolution.hpp.
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <unistd.h>
 
 #include "cli/command_registry.hpp"
+#include "cli/design_run.hpp"
 #include "cli/mission_input.hpp"
 #include "control/config_string.hpp"
+#include "evaluation/results_version.hpp"
 #include "evostick/evolution.hpp"
 #include "evostick/module_training.hpp"
+#include "evostick/saved_evolution.hpp"
 #include "evostick/weight_document.hpp"
 #include "missions/catalogue.hpp"
 
@@ -24,7 +30,7 @@ namespace {
 using nlohmann::json;
 
 struct Options {
-  std::string module, mission, output;
+  std::string module, mission, output, state, resume;
   std::int64_t budget = 0;
   int threads = 0;
   bool json = false;
@@ -75,13 +81,32 @@ void print_text(const evostick::Result& result, const evostick::Settings& settin
             << "Generations " << settings.generations << "\n";
 }
 
-void run_module(const Options& o) {
+/// Where the evolution's state goes after every generation (--state, or the file resumed from),
+/// and the state it continues from.
+struct Persistence {
+  evostick::SavedEvolution identity;  // what is evolved, with which settings; no checkpoint
+  std::filesystem::path file;         // empty: the state is not kept
+  std::optional<evostick::Checkpoint> resume;
+
+  evostick::CheckpointSink sink() const {
+    if (file.empty()) return {};
+    return [this](const evostick::Checkpoint& c) {
+      evostick::SavedEvolution saved = identity;
+      saved.checkpoint = c;
+      evostick::write_saved_evolution(file, saved);
+    };
+  }
+  const evostick::Checkpoint* from() const { return resume ? &*resume : nullptr; }
+};
+
+void run_module(const Options& o, const Persistence& keep) {
   const evostick::ModuleTraining* module = evostick::find_module_training(o.module);
   if (!module)
     throw UsageError("--module: unknown module '" + o.module + "' (one of " + evostick::module_names_text() + ")");
   const bool progress_shown = isatty(STDERR_FILENO) && !o.json;
   ProgressLine line(progress_shown, o.settings.generations);
-  const evostick::Result result = evostick::train_module(*module, o.settings, o.threads, line.callback());
+  const evostick::Result result =
+      evostick::train_module(*module, o.settings, o.threads, line.callback(), keep.from(), keep.sink());
   const std::string text = evostick::document_text(evostick::module_document(*module, o.settings, result));
   if (!o.output.empty()) write_output(o.output, text);
   if (o.json) {
@@ -93,13 +118,12 @@ void run_module(const Options& o) {
   if (!o.output.empty()) std::cout << "Written to " << o.output << "\n";
 }
 
-void run_mission(const Options& o) {
-  const Mission mission = load_mission_or_usage(o.mission);
+void run_mission(const Options& o, const Mission& mission, const Persistence& keep) {
   const bool progress_shown = isatty(STDERR_FILENO) && !o.json;
   ProgressLine line(progress_shown, o.settings.generations);
   ThreadedEvaluator evaluator(o.threads);
-  const evostick::Result result =
-      evostick::evolve(mission, mission.objective.direction, evaluator, o.settings, line.callback());
+  const evostick::Result result = evostick::evolve(mission, mission.objective.direction, evaluator, o.settings,
+                                                   line.callback(), keep.from(), keep.sink());
   json doc{{"mission", mission.name},
            {"direction", direction_name(mission.objective.direction)},
            {"settings", evostick::settings_json(o.settings)},
@@ -120,6 +144,61 @@ void run_mission(const Options& o) {
   if (!o.output.empty()) std::cout << "Written to " << o.output << "\n";
 }
 
+/// The mission a saved evolution was made for, unchanged since.
+Mission saved_mission(const evostick::SavedEvolution& saved, const std::string& file) {
+  Mission mission;
+  try {
+    mission = load_mission(saved.mission);
+  } catch (const MissionError& e) {
+    throw std::runtime_error("the mission of the evolution in " + file + " cannot be loaded: " + e.what());
+  }
+  if (mission.digest != saved.mission_digest)
+    throw std::runtime_error("the mission " + saved.mission + " has changed since the evolution in " + file +
+                             " started, and resuming would mix runs of two missions; restore it, or start anew");
+  return mission;
+}
+
+void resume_evolution(Options o) {
+  const evostick::SavedEvolution saved = evostick::read_saved_evolution(o.resume);
+  if (saved.results_version != kResultsVersion)
+    throw std::runtime_error("the evolution in " + o.resume + " was run by a swarmdesign whose simulations score differently (results version " +
+                             std::to_string(saved.results_version) + ", this one " + std::to_string(kResultsVersion) +
+                             "); finish it with that version, or start anew");
+  o.settings = saved.settings;
+  try {
+    o.settings.validate();
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(o.resume + " is a damaged EvoStick state file (" + e.what() + ")");
+  }
+  Persistence keep{saved, o.resume, saved.checkpoint};
+  keep.identity.checkpoint = {};
+  if (!saved.module.empty()) {
+    o.module = saved.module;
+    run_module(o, keep);
+  } else {
+    const Mission mission = saved_mission(saved, o.resume);
+    run_mission(o, mission, keep);
+  }
+}
+
+void start_evolution(const Options& o) {
+  Persistence keep;
+  keep.file = o.state;
+  keep.identity.settings = o.settings;
+  keep.identity.results_version = kResultsVersion;
+  if (!o.state.empty() && std::filesystem::exists(o.state))
+    throw UsageError("--state: " + o.state + " already holds an evolution; continue it with --resume " + o.state);
+  if (!o.module.empty()) {
+    keep.identity.module = o.module;
+    run_module(o, keep);
+    return;
+  }
+  const Mission mission = load_mission_or_usage(o.mission);
+  keep.identity.mission = mission_reference(o.mission);
+  keep.identity.mission_digest = mission.digest;
+  run_mission(o, mission, keep);
+}
+
 void register_evostick(CLI::App& app, Context& context) {
   auto* cmd = app.add_subcommand(
       "evostick", "Evolve an Arlequin network: one module (--module) or the EvoStick baseline on a mission (--mission)");
@@ -128,19 +207,27 @@ void register_evostick(CLI::App& app, Context& context) {
                                  "Train an Arlequin module against its measure: " + evostick::module_names_text());
   auto* mission = cmd->add_option("--mission", o->mission, "Design a network for this mission (name or file)");
   module->excludes(mission);
-  cmd->add_option("--seed", o->settings.seed, "Seed of the evolution (default 1)");
+  auto* seed = cmd->add_option("--seed", o->settings.seed, "Seed of the evolution (default 1)");
   auto* generations = cmd->add_option("--generations", o->settings.generations,
                                       "Generations (--module default: " +
                                           std::to_string(evostick::kShippedGenerations) + ", the shipped weights')");
   auto* budget = cmd->add_option("--budget", o->budget,
                                  "Budget in simulation runs; generations = budget / (population x evaluations)");
   generations->excludes(budget);
-  cmd->add_option("--population", o->settings.population, "Networks per generation (default 100)");
-  cmd->add_option("--evaluations", o->settings.evaluations, "Runs per network and generation (default 10)");
-  cmd->add_option("--elites", o->settings.elites, "Best networks kept unchanged (default 20)");
-  cmd->add_option("--mutation-sigma", o->settings.mutation_sigma, "Standard deviation of the weight noise (default 1)");
-  cmd->add_option("--mutation-probability", o->settings.mutation_probability,
-                  "Chance that each weight of a child gets noise (default 0.3)");
+  auto* population = cmd->add_option("--population", o->settings.population, "Networks per generation (default 100)");
+  auto* evaluations =
+      cmd->add_option("--evaluations", o->settings.evaluations, "Runs per network and generation (default 10)");
+  auto* elites = cmd->add_option("--elites", o->settings.elites, "Best networks kept unchanged (default 20)");
+  auto* sigma =
+      cmd->add_option("--mutation-sigma", o->settings.mutation_sigma, "Standard deviation of the weight noise (default 1)");
+  auto* probability = cmd->add_option("--mutation-probability", o->settings.mutation_probability,
+                                      "Chance that each weight of a child gets noise (default 0.3)");
+  auto* state = cmd->add_option("--state", o->state,
+                                "Keep the evolution's state in FILE at every generation; after a kill, --resume FILE "
+                                "continues it");
+  cmd->add_option("--resume", o->resume,
+                  "Continue the evolution kept in FILE (--state) with its mission or module and settings, and keep "
+                  "its state there");
   cmd->add_option("--threads", o->threads, "Worker threads (default: all cores); never changes the result")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--output", o->output, "Also write the JSON document to FILE");
@@ -150,10 +237,21 @@ void register_evostick(CLI::App& app, Context& context) {
       "generation's runs, and the runs used. The same seed and settings give the same network whatever --threads.\n"
       "Examples:\n"
       "  swarmdesign evostick --module phototaxis --seed 1 --output data/arlequin/phototaxis.json\n"
-      "  swarmdesign evostick --mission aac --budget 20000 --seed 7 --json");
-  cmd->callback([o, module, mission, generations, budget, &context] {
+      "  swarmdesign evostick --mission aac --budget 20000 --seed 7 --json --state aac-7.evostick\n"
+      "  swarmdesign evostick --resume aac-7.evostick --json");
+  const std::vector<const CLI::Option*> settings_options{module,      mission, seed,  generations, budget,     population,
+                                                         evaluations, elites,  sigma, probability, state};
+  cmd->callback([o, module, mission, generations, budget, settings_options, &context] {
     if (context.has_control_software()) throw UsageError("evostick takes no control software: it evolves one");
-    if (module->count() == 0 && mission->count() == 0) throw UsageError("give --module NAME or --mission M");
+    if (!o->resume.empty()) {
+      for (const CLI::Option* option : settings_options)
+        if (option->count() > 0)
+          throw UsageError("--resume continues with what " + o->resume + " keeps; " + option->get_name() +
+                           " cannot change it");
+      resume_evolution(*o);
+      return;
+    }
+    if (module->count() == 0 && mission->count() == 0) throw UsageError("give --module NAME, --mission M or --resume FILE");
     if (mission->count() > 0 && generations->count() == 0 && budget->count() == 0)
       throw UsageError("--mission needs a budget: --budget RUNS or --generations G");
     if (module->count() > 0 && generations->count() == 0 && budget->count() == 0)
@@ -164,8 +262,7 @@ void register_evostick(CLI::App& app, Context& context) {
     } catch (const std::invalid_argument& e) {
       throw UsageError(e.what());
     }
-    if (module->count() > 0) run_module(*o);
-    else run_mission(*o);
+    start_evolution(*o);
   });
 }
 

@@ -85,18 +85,39 @@ std::uint64_t weight_digest(const arlequin::Weights& weights) {
 }
 
 Result evolve(const Mission& mission, Direction direction, Evaluator& evaluator, const Settings& settings,
-              const Progress& progress) {
+              const Progress& progress, const Checkpoint* resume, const CheckpointSink& save) {
   settings.validate();
   Rng rng(settings.seed);
-  std::vector<ControlSoftware> population = initial_population(settings, rng);
+  std::vector<ControlSoftware> population;
+  Result result;
+  int first = 1;
+  if (resume) {
+    if (resume->generation < 0 || resume->generation >= settings.generations ||
+        resume->population.size() != static_cast<std::size_t>(settings.population))
+      throw std::invalid_argument("the saved evolution does not fit these settings");
+    population.assign(resume->population.size(), network_software());
+    for (std::size_t p = 0; p < population.size(); ++p) population[p].network.weights = resume->population[p];
+    rng.set_state(resume->rng);
+    result = resume->result;
+    first = resume->generation + 1;
+  } else {
+    population = initial_population(settings, rng);
+  }
   const auto size = population.size();
+  auto save_state = [&](int done) {
+    if (!save) return;
+    Checkpoint checkpoint{done, {}, rng.state(), result};
+    checkpoint.population.reserve(size);
+    for (const ControlSoftware& network : population) checkpoint.population.push_back(network.network.weights);
+    save(checkpoint);
+  };
+  if (!resume) save_state(0);
   const auto evaluations = static_cast<std::size_t>(settings.evaluations);
   std::vector<EvaluationTask> tasks(size * evaluations);
   std::vector<double> scores(tasks.size()), means(size);
   std::vector<std::size_t> ranking(size);
-  Result result;
 
-  for (int generation = 1; generation <= settings.generations; ++generation) {
+  for (int generation = first; generation <= settings.generations; ++generation) {
     std::vector<std::uint64_t> seeds(evaluations);
     for (auto& seed : seeds) seed = rng.next();
     for (std::size_t p = 0; p < size; ++p)
@@ -129,6 +150,7 @@ Result evolve(const Mission& mission, Direction direction, Evaluator& evaluator,
       break;
     }
     population = next_generation(population, ranking, settings, rng);
+    save_state(generation);
   }
   return result;
 }

@@ -21,6 +21,7 @@
 #include <functional>
 #include <vector>
 
+#include "core/rng.hpp"
 #include "evaluation/evaluator.hpp"
 #include "modules/arlequin.hpp"
 
@@ -71,10 +72,22 @@ struct Result {
 
 using Progress = std::function<void(const GenerationRecord&)>;
 
+/// What an evolution carries from one generation to the next: continuing from it gives
+/// exactly what the uninterrupted evolution would have.
+struct Checkpoint {
+  int generation = 0;                         // generations done (0..generations - 1)
+  std::vector<arlequin::Weights> population;  // the networks of generation `generation` + 1
+  Rng::State rng{};
+  Result result;                              // history and runs so far
+};
+using CheckpointSink = std::function<void(const Checkpoint&)>;
+
 /// Evolves a network for `mission`, ranking by the scores `evaluator` returns in the given
-/// direction. `progress` is called after every generation.
+/// direction. `progress` is called after every generation; `save`, if set, at the start and
+/// after every generation but the last, with the state to continue from. `resume` continues
+/// an evolution from such a state (made with the same settings).
 Result evolve(const Mission& mission, Direction direction, Evaluator& evaluator, const Settings& settings,
-              const Progress& progress = {});
+              const Progress& progress = {}, const Checkpoint* resume = nullptr, const CheckpointSink& save = {});
 
 /// FNV-1a over the bit patterns of the weights: two networks have the same digest only if
 /// (barring a collision) every weight is the same double.

@@ -49,6 +49,7 @@ class MeasureEvaluator : public Evaluator {
 };
 
 /// Evolves one module's network.
-Result train_module(const ModuleTraining& module, const Settings& settings, int threads, const Progress& progress = {});
+Result train_module(const ModuleTraining& module, const Settings& settings, int threads, const Progress& progress = {},
+                    const Checkpoint* resume = nullptr, const CheckpointSink& save = {});
 
 }  // namespace sd::evostick

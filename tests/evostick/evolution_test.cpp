@@ -175,6 +175,27 @@ TEST(EvoStick, SameSeedSameNetworkOtherSeedOtherNetwork) {
   EXPECT_NE(x.best, z.best);
 }
 
+TEST(EvoStick, AnEvolutionResumedFromAnyGenerationEndsAsTheUninterruptedOne) {
+  ScriptedEvaluator whole_evaluator(0.5, 3.0);
+  std::vector<evostick::Checkpoint> saved;
+  const auto whole = evostick::evolve(Mission{}, Direction::Maximize, whole_evaluator, small(6, 9), {}, nullptr,
+                                      [&](const evostick::Checkpoint& c) { saved.push_back(c); });
+  ASSERT_EQ(saved.size(), 6u) << "the start, then after generations 1 to 5";
+  for (const evostick::Checkpoint& c : saved) {
+    ScriptedEvaluator rest_evaluator(0.5, 3.0);
+    const auto rest = evostick::evolve(Mission{}, Direction::Maximize, rest_evaluator, small(6, 9), {}, &c);
+    EXPECT_EQ(rest.best, whole.best) << c.generation;
+    EXPECT_EQ(rest.best_mean, whole.best_mean) << c.generation;
+    EXPECT_EQ(rest.history, whole.history) << c.generation;
+    EXPECT_EQ(rest.runs, whole.runs) << c.generation;
+    EXPECT_EQ(rest_evaluator.batches.size(), static_cast<std::size_t>(6 - c.generation)) << "only what is left runs";
+  }
+  Settings other = small(6, 9);
+  other.population = 10;
+  EXPECT_THROW(evostick::evolve(Mission{}, Direction::Maximize, whole_evaluator, other, {}, &saved[2]),
+               std::invalid_argument);
+}
+
 TEST(EvoStick, SettingsAndBudgetsAreChecked) {
   EXPECT_NO_THROW(Settings{}.validate());
   const std::pair<std::function<void(Settings&)>, std::string> cases[] = {

@@ -4,9 +4,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
+
+#include <unistd.h>
 
 #include "workflow/swarmdesign_process.hpp"
 
@@ -112,7 +117,7 @@ TEST(EvoStickCli, MisuseIsAOneLineErrorWithExitStatusTwo) {
       {"evostick --mission aac --budget 999", "does not pay for one generation (1000 runs"},
       {"evostick --mission aac --budget 5000 --elites 100", "elites must be between 1 and population - 1"},
       {"evostick --mission nowhere --budget 5000", "unknown mission 'nowhere'"},
-      {"evostick --seed 3", "give --module NAME or --mission M"},
+      {"evostick --seed 3", "give --module NAME, --mission M or --resume FILE"},
       {"evostick --module stop --mission aac", "excludes"},
       {"evostick --module stop --fsm-config --nstates 1 --s0 10 --rwm0 5", "evostick takes no control software"},
   };
@@ -122,6 +127,53 @@ TEST(EvoStickCli, MisuseIsAOneLineErrorWithExitStatusTwo) {
     EXPECT_NE(r.err.find(message), std::string::npos) << command << "\n" << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << command << "\n" << r.err;
   }
+}
+
+TEST(EvoStickCli, AKilledEvolutionResumesFromItsStateFileAndEndsAsAnUninterruptedOne) {
+  const auto dir = std::filesystem::temp_directory_path() / ("evostick-state-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string state = (dir / "run.evostick").string();
+  const std::string settings = "evostick --mission aac --generations 14 --population 6 --evaluations 2 --elites 2 --seed 5";
+  const auto whole = run(settings + " --json");
+  ASSERT_EQ(whole.exit_code, 0) << whole.err;
+
+  auto saved_generation = [&] {
+    std::ifstream in(state);
+    const auto doc = nlohmann::json::parse(in, nullptr, false);
+    return doc.is_discarded() ? -1 : doc.value("generation", -1);
+  };
+  std::vector<std::string> args;
+  std::istringstream words(settings + " --json --state " + state);
+  for (std::string w; words >> w;) args.push_back(w);
+  const int pid = test::start_swarmdesign(args, {}, (dir / "out").string(), (dir / "err").string());
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (saved_generation() < 3 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ::kill(pid, SIGKILL);
+  EXPECT_EQ(test::wait_swarmdesign(pid), -1) << "the evolution ended before it could be killed";
+  const int killed_at = saved_generation();
+  ASSERT_GE(killed_at, 3);
+  ASSERT_LT(killed_at, 14);
+
+  const auto resumed = run("evostick --resume " + state + " --json");
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_EQ(resumed.out, whole.out) << "killed after generation " << killed_at;
+  EXPECT_EQ(saved_generation(), 13) << "the state is kept on while resuming";
+
+  // A state file is never silently overwritten, nor resumed with other settings.
+  const auto again = run(settings + " --state " + state);
+  EXPECT_EQ(again.exit_code, 2);
+  EXPECT_NE(again.err.find("already holds an evolution; continue it with --resume"), std::string::npos) << again.err;
+  const auto changed = run("evostick --resume " + state + " --seed 6");
+  EXPECT_EQ(changed.exit_code, 2);
+  EXPECT_NE(changed.err.find("--seed cannot change it"), std::string::npos) << changed.err;
+  std::ofstream(dir / "damaged.evostick") << "{\"format\": \"swarmdesign-evostick-state\", \"version\": 1, \"mission\"";
+  const auto damaged = run("evostick --resume " + (dir / "damaged.evostick").string());
+  EXPECT_EQ(damaged.exit_code, 1);
+  EXPECT_NE(damaged.err.find("not an EvoStick state file"), std::string::npos) << damaged.err;
+  EXPECT_EQ(std::count(damaged.err.begin(), damaged.err.end(), '\n'), 1) << damaged.err;
+  std::filesystem::remove_all(dir);
 }
 
 TEST(EvoStickCli, EvaluateRunsArlequinModulesInAnFsmAndATree) {

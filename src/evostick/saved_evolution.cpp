@@ -1,0 +1,108 @@
+#include "evostick/saved_evolution.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "evostick/weight_document.hpp"
+
+namespace sd::evostick {
+
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* kFormat = "swarmdesign-evostick-state";
+constexpr int kFormatVersion = 1;
+
+Settings settings_from_json(const json& j) {
+  Settings s;
+  j.at("seed").get_to(s.seed);
+  j.at("population").get_to(s.population);
+  j.at("evaluations").get_to(s.evaluations);
+  j.at("elites").get_to(s.elites);
+  j.at("mutation_sigma").get_to(s.mutation_sigma);
+  j.at("mutation_probability").get_to(s.mutation_probability);
+  j.at("weight_bound").get_to(s.weight_bound);
+  j.at("generations").get_to(s.generations);
+  return s;
+}
+
+std::uint64_t digest_from_text(const std::string& text) {
+  std::size_t used = 0;
+  const std::uint64_t value = std::stoull(text, &used, 16);
+  if (used != text.size()) throw std::invalid_argument("digest");
+  return value;
+}
+
+}  // namespace
+
+void write_saved_evolution(const std::filesystem::path& file, const SavedEvolution& saved) {
+  const Checkpoint& c = saved.checkpoint;
+  json population = json::array();
+  for (const arlequin::Weights& w : c.population) population.push_back(w);
+  const json doc{{"format", kFormat},
+                 {"version", kFormatVersion},
+                 {"mission", saved.mission},
+                 {"mission_digest", saved.mission_digest},
+                 {"module", saved.module},
+                 {"settings", settings_json(saved.settings)},
+                 {"results_version", saved.results_version},
+                 {"generation", c.generation},
+                 {"population", std::move(population)},
+                 {"rng", {{"s", c.rng.s}, {"coarse_bits", c.rng.coarse_bits}, {"coarse_left", c.rng.coarse_left}}},
+                 {"runs", c.result.runs},
+                 {"history", history_json(c.result.history)}};
+  std::filesystem::path temporary = file;
+  temporary += ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::trunc);
+    if (!out || !(out << doc.dump() << '\n') || !out.flush()) throw std::runtime_error("cannot write " + temporary.string());
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, file, error);
+  if (error) throw std::runtime_error("cannot replace " + file.string() + ": " + error.message());
+}
+
+SavedEvolution read_saved_evolution(const std::filesystem::path& file) {
+  if (!std::filesystem::exists(file)) throw std::runtime_error("there is no EvoStick state file " + file.string());
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error("cannot read " + file.string());
+  std::stringstream text;
+  text << in.rdbuf();
+  const json doc = json::parse(text.str(), nullptr, false);
+  if (doc.is_discarded() || !doc.is_object() || doc.value("format", "") != kFormat)
+    throw std::runtime_error(file.string() + " is not an EvoStick state file (it may be damaged)");
+  try {
+    if (doc.at("version").get<int>() != kFormatVersion)
+      throw std::runtime_error(file.string() + " has state format version " + doc.at("version").dump() +
+                               "; this swarmdesign reads version " + std::to_string(kFormatVersion));
+    SavedEvolution saved;
+    doc.at("mission").get_to(saved.mission);
+    doc.at("mission_digest").get_to(saved.mission_digest);
+    doc.at("module").get_to(saved.module);
+    saved.settings = settings_from_json(doc.at("settings"));
+    doc.at("results_version").get_to(saved.results_version);
+    Checkpoint& c = saved.checkpoint;
+    doc.at("generation").get_to(c.generation);
+    for (const json& w : doc.at("population")) c.population.push_back(w.get<arlequin::Weights>());
+    const json& rng = doc.at("rng");
+    rng.at("s").get_to(c.rng.s);
+    rng.at("coarse_bits").get_to(c.rng.coarse_bits);
+    rng.at("coarse_left").get_to(c.rng.coarse_left);
+    doc.at("runs").get_to(c.result.runs);
+    for (const json& r : doc.at("history"))
+      c.result.history.push_back({r.at("generation").get<int>(), r.at("best_mean").get<double>(),
+                                  r.at("population_mean").get<double>(),
+                                  digest_from_text(r.at("best_digest").get<std::string>())});
+    return saved;
+  } catch (const json::exception& e) {
+    throw std::runtime_error(file.string() + " is a damaged EvoStick state file (" + e.what() + ")");
+  } catch (const std::invalid_argument&) {
+    throw std::runtime_error(file.string() + " is a damaged EvoStick state file (a digest is not hexadecimal)");
+  }
+}
+
+}  // namespace sd::evostick
