@@ -81,7 +81,7 @@ class Rng {
   bool bernoulli(double p) { return uniform() < p; }
 
   /// Standard normal by the ziggurat method (Marsaglia and Tsang 2000, 256 layers): one 64-bit
-  /// draw gives the layer (8 bits), the sign (1 bit) and the position (53 bits), and 99 % of
+  /// draw gives the layer (8 bits), the sign (1 bit) and the position (53 bits), and 98.5 % of
   /// draws are accepted at once, without a logarithm. The layers are computed once, with
   /// math::exp and math::log, so they are the same on every machine.
   double normal() {
