@@ -18,6 +18,7 @@
 #include "cli/score_report.hpp"
 #include "control/config_string.hpp"
 #include "missions/catalogue.hpp"
+#include "storage/design_store.hpp"
 #include "storage/designs.hpp"
 #include "storage/errors.hpp"
 #include "storage/projects.hpp"
@@ -31,6 +32,7 @@ struct RunDesignOptions {
   std::string seed;
   unsigned threads = 0;
   bool detach = false;
+  bool fresh = false;  // --new: give up an interrupted design instead of resuming it
 };
 
 /// A design the command has recorded and is about to run.
@@ -49,17 +51,24 @@ Started start_or_resume(const RunDesignOptions& o) {
   storage::Designs designs(workspace, project);
   const auto latest = designs.latest();
 
-  if (latest && latest->state == storage::DesignState::interrupted && !project.cluster) {
+  if (latest && latest->state == storage::DesignState::interrupted && !project.cluster && !o.fresh) {
+    PreparedDesign prepared;
+    try {
+      prepared = std::filesystem::exists(storage::DesignStore::file_in(latest->folder))
+                     ? prepare_resume(latest->folder, true)
+                     : prepare_new_design({latest->mission, latest->budget,
+                                           design::request_from_text(latest->architectures, latest->flavours),
+                                           latest->seed},
+                                          latest->folder);  // killed before its first checkpoint
+    } catch (const storage::DesignFolderError& e) {
+      throw storage::DesignFolderError("design " + std::to_string(latest->id) + " of " + project.name +
+                              " was interrupted and cannot be resumed: " + e.what() +
+                              " (run-design --new gives it up and starts a new design)");
+    }
     std::cout << "Design " << latest->id << " of " << project.name << " was interrupted; resuming it";
     std::cout << (o.flags.any() || !o.seed.empty() ? " with the settings it started with (the flags given are ignored)"
                                                    : "")
               << ".\n";
-    PreparedDesign prepared =
-        std::filesystem::exists(storage::DesignStore::file_in(latest->folder))
-            ? prepare_resume(latest->folder, true)
-            : prepare_new_design({latest->mission, latest->budget,
-                                  design::request_from_text(latest->architectures, latest->flavours), latest->seed},
-                                 latest->folder);  // killed before its first checkpoint
     storage::Design resumed = designs.resume(latest->id, ::getpid());
     return {project, resumed, std::move(prepared)};
   }
@@ -74,6 +83,11 @@ Started start_or_resume(const RunDesignOptions& o) {
   std::optional<PreparedDesign> checked;
   if (project.mission && project.budget && !project.cluster)  // else Designs::start says what is missing
     checked = check_new_design({*project.mission, *project.budget, o.flags.request(), seed});
+  if (checked && latest && latest->state == storage::DesignState::interrupted && o.fresh) {
+    designs.abandon(latest->id);
+    std::cout << "Design " << latest->id << " of " << project.name << " is given up (failed); its data stays in "
+              << latest->folder.string() << ".\n";
+  }
   storage::Design design =
       designs.start({choice.architectures_text(), choice.flavours_text(), seed, static_cast<int>(::getpid())});
   if (!checked) throw std::logic_error("a design started without a mission or budget");
@@ -188,11 +202,14 @@ CommandRegistrar registrar{40, [](CLI::App& app, Context& context) {
   cmd->add_option("--seed", run->seed, "Seed of the design (default: a random one, printed)");
   cmd->add_option("--threads", run->threads, "Simulations in parallel (default: all cores)")->check(CLI::NonNegativeNumber);
   cmd->add_flag("--detach", run->detach, "Run in the background, surviving the terminal closing; watch it with status");
+  cmd->add_flag("--new", run->fresh,
+                "Start a new design even if the last one was interrupted; that one becomes failed (its folder stays)");
   cmd->footer(
       "Runs in the foreground with a progress line, or with --detach in the background (output in the\n"
       "design's design.log). One design runs per project at a time. If the project's last design was\n"
       "interrupted (killed, machine restarted), run-design resumes it with the settings it started with\n"
-      "and it ends exactly as if it had never stopped.\n\n"
+      "and it ends exactly as if it had never stopped; when it cannot be resumed (its mission was edited,\n"
+      "or it was begun by a swarmdesign whose runs score differently), --new gives it up and starts anew.\n\n"
       "Example:\n  swarmdesign run-design --fsm --chocolate --seed 1\n  swarmdesign run-design --detach");
   cmd->callback([run] { run_design(*run); });
 

@@ -178,10 +178,15 @@ void Designs::finish(std::int64_t design_id, const std::string& best_config, dou
   transaction.commit();
 }
 
-void Designs::mark_failed(std::int64_t design_id) {
+void Designs::abandon(std::int64_t design_id) { fail(design_id, "('interrupted')", true); }
+
+void Designs::mark_failed(std::int64_t design_id) { fail(design_id, "('running')", false); }
+
+void Designs::fail(std::int64_t design_id, std::string_view from_states, bool mark_dead_first) {
   Database& db = workspace_.database();
   Transaction transaction(db);
-  set_state(design_id, DesignState::failed, "('running')");
+  if (mark_dead_first) mark_dead_designs_interrupted();  // "interrupted" may not be written yet
+  set_state(design_id, DesignState::failed, from_states);
   db.prepare("UPDATE designs SET finished_at = updated_at WHERE id = ?").bind(1, design_id).run();
   transaction.commit();
 }

@@ -60,6 +60,9 @@ class Designs {
   void set_pid(std::int64_t design_id, int pid);
   void finish(std::int64_t design_id, const std::string& best_config, double best_score);
   void mark_failed(std::int64_t design_id);
+  /// Gives up an interrupted design (it becomes failed; its folder stays), so that a new one
+  /// can start: for a design that cannot be resumed any more.
+  void abandon(std::int64_t design_id);
 
   /// The current or last design, for `status`; running designs whose process is gone are
   /// reported as interrupted.
@@ -70,6 +73,7 @@ class Designs {
   void mark_dead_designs_interrupted();
   Design get(std::int64_t design_id);
   void set_state(std::int64_t design_id, DesignState state, std::string_view from_states);
+  void fail(std::int64_t design_id, std::string_view from_states, bool mark_dead_first);
 
   Workspace& workspace_;
   Project project_;

@@ -6,6 +6,7 @@
 
 #include <sstream>
 
+#include "storage/sqlite.hpp"
 #include "workflow/design_helpers.hpp"
 #include "workflow/workflow_fixture.hpp"
 
@@ -138,6 +139,27 @@ TEST_F(run_design, AKilledDesignIsResumedByRunDesignAndEndsAsIfNeverStopped) {
   // (query() reads the REAL back as text with 15 digits; the log comparison below is exact.)
   EXPECT_NEAR(std::stod(query("SELECT best_score FROM designs")), expected["best"]["mean_score"].get<double>(), 1e-9);
   EXPECT_EQ(experiment_log(design_folder(1)), experiment_log(scratch() / "reference"));
+}
+
+TEST_F(run_design, AnInterruptedDesignThatCannotBeResumedIsGivenUpWithNew) {
+  project_with_budget(1100);
+  run_ok({"run-design", "--detach", "--fsm", "--chocolate", "--seed", "7", "--threads", "2"});
+  ASSERT_TRUE(wait_until([&] { return checkpoint_step(design_folder(1)) >= 3; }, 60s));
+  ASSERT_EQ(::kill(status()["design"]["pid"].get<int>(), SIGKILL), 0);
+  ASSERT_TRUE(wait_until([&] { return status()["design"]["state"] == "interrupted"; }, 10s));
+  // As after an upgrade whose simulator scores differently: resuming would mix two simulators.
+  storage::Database(design_folder(1) / "design.db").execute("UPDATE meta SET value = '1' WHERE key = 'results_version'");
+
+  const Outcome refused = run({"run-design"});
+  expect_error(refused, 1, "design 1 of swarm was interrupted and cannot be resumed");
+  EXPECT_NE(refused.err.find("run-design --new"), std::string::npos) << refused.err;
+  EXPECT_EQ(status()["design"]["state"], "interrupted");
+
+  const std::string fresh = run_ok({"run-design", "--new", "--fsm", "--chocolate", "--seed", "8", "--threads", "2"});
+  EXPECT_NE(fresh.find("Design 1 of swarm is given up (failed)"), std::string::npos) << fresh;
+  EXPECT_EQ(query("SELECT group_concat(state) FROM (SELECT state FROM designs ORDER BY id)"), "failed,finished");
+  EXPECT_TRUE(std::filesystem::exists(design_folder(1) / "design.db")) << "the given-up design's data stays";
+  EXPECT_EQ(status()["design"]["state"], "finished");
 }
 
 TEST_F(run_design, RefusedRequestsChangeNothing) {
