@@ -107,9 +107,11 @@ PreparedDesign prepare_resume(const std::filesystem::path& folder, bool allow_fi
     throw DesignFolderError("the mission " + meta.mission + " has changed since the design in " + d.folder.string() +
                             " started, and resuming would mix runs of two missions; restore it, or start a new design");
   if (meta.results_version != kResultsVersion)
-    throw DesignFolderError("the design in " + d.folder.string() + " was run by a swarmdesign whose simulations score differently (results version " +
+    throw DesignFolderError("the design in " + d.folder.string() +
+                            " was run by a swarmdesign whose simulations score differently (results version " +
                             std::to_string(meta.results_version) + ", this one " + std::to_string(kResultsVersion) +
-                            "), and resuming would mix runs of two simulators; finish it with that version, or start a new design");
+                            "), and resuming would mix runs of two simulators; finish it with that version, or "
+                            "start a new design");
   try {
     d.choice = design::resolve_design_space(design::request_from_text(meta.architectures, meta.flavours));
   } catch (const std::invalid_argument& e) {

@@ -161,7 +161,8 @@ Mission saved_mission(const evostick::SavedEvolution& saved, const std::string& 
 void resume_evolution(Options o) {
   const evostick::SavedEvolution saved = evostick::read_saved_evolution(o.resume);
   if (saved.results_version != kResultsVersion)
-    throw std::runtime_error("the evolution in " + o.resume + " was run by a swarmdesign whose simulations score differently (results version " +
+    throw std::runtime_error("the evolution in " + o.resume +
+                             " was run by a swarmdesign whose simulations score differently (results version " +
                              std::to_string(saved.results_version) + ", this one " + std::to_string(kResultsVersion) +
                              "); finish it with that version, or start anew");
   o.settings = saved.settings;

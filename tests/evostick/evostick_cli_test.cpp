@@ -173,6 +173,13 @@ TEST(EvoStickCli, AKilledEvolutionResumesFromItsStateFileAndEndsAsAnUninterrupte
   EXPECT_EQ(damaged.exit_code, 1);
   EXPECT_NE(damaged.err.find("not an EvoStick state file"), std::string::npos) << damaged.err;
   EXPECT_EQ(std::count(damaged.err.begin(), damaged.err.end(), '\n'), 1) << damaged.err;
+  // Nor by a build whose runs score differently.
+  auto older = nlohmann::json::parse(std::ifstream(state));
+  older["results_version"] = 1;
+  std::ofstream(dir / "older.evostick") << older.dump();
+  const auto refused = run("evostick --resume " + (dir / "older.evostick").string());
+  EXPECT_EQ(refused.exit_code, 1);
+  EXPECT_NE(refused.err.find("(results version 1, this one "), std::string::npos) << refused.err;
   std::filesystem::remove_all(dir);
 }
 
