@@ -8,6 +8,7 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <thread>
 
@@ -180,6 +181,25 @@ TEST(EvoStickCli, AKilledEvolutionResumesFromItsStateFileAndEndsAsAnUninterrupte
   const auto refused = run("evostick --resume " + (dir / "older.evostick").string());
   EXPECT_EQ(refused.exit_code, 1);
   EXPECT_NE(refused.err.find("(results version 1, this one "), std::string::npos) << refused.err;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(EvoStickCli, AnEvolutionWhoseMissionFileWasEditedIsNotResumed) {
+  const auto dir = std::filesystem::temp_directory_path() / ("evostick-edited-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::stringstream aac;
+  aac << std::ifstream(std::string(SWARMDESIGN_SOURCE_DIR) + "/missions/aac.json").rdbuf();
+  const auto mission = dir / "mine.json";
+  std::ofstream(mission) << aac.str();
+  const std::string state = (dir / "mine.evostick").string();
+  const auto first = run("evostick --mission " + mission.string() +
+                         " --generations 3 --population 4 --evaluations 1 --elites 1 --state " + state);
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  std::ofstream(mission) << std::regex_replace(aac.str(), std::regex("\"duration\": *[0-9.]+"), "\"duration\": 60");
+  const auto refused = run("evostick --resume " + state);
+  EXPECT_EQ(refused.exit_code, 1);
+  EXPECT_NE(refused.err.find("has changed since the evolution"), std::string::npos) << refused.err;
   std::filesystem::remove_all(dir);
 }
 
