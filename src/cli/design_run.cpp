@@ -8,6 +8,7 @@
 #include "cli/command_registry.hpp"
 #include "cli/mission_input.hpp"
 #include "cli/progress_display.hpp"
+#include "cli/resumable_runs.hpp"
 #include "cli/simulation_runner.hpp"
 #include "control/config_string.hpp"
 #include "control/describe.hpp"
@@ -98,20 +99,10 @@ PreparedDesign prepare_resume(const std::filesystem::path& folder, bool allow_fi
   storage::DesignStore store = storage::DesignStore::open(d.folder, true);
   const storage::DesignMeta& meta = store.meta();
   d.mission_reference = meta.mission;
-  try {
-    d.mission = load_mission(meta.mission);
-  } catch (const MissionError& e) {
-    throw DesignFolderError("the mission of the design in " + d.folder.string() + " cannot be loaded: " + e.what());
-  }
-  if (!meta.mission_digest.empty() && meta.mission_digest != d.mission.digest)
-    throw DesignFolderError("the mission " + meta.mission + " has changed since the design in " + d.folder.string() +
-                            " started, and resuming would mix runs of two missions; restore it, or start a new design");
-  if (meta.results_version != kResultsVersion)
-    throw DesignFolderError("the design in " + d.folder.string() +
-                            " was run by a swarmdesign whose simulations score differently (results version " +
-                            std::to_string(meta.results_version) + ", this one " + std::to_string(kResultsVersion) +
-                            "), and resuming would mix runs of two simulators; finish it with that version, or "
-                            "start a new design");
+  ResumeCheck check =
+      check_resumable("the design in " + d.folder.string(), meta.mission, meta.mission_digest, meta.results_version);
+  if (!check.refusal.empty()) throw DesignFolderError(check.refusal);
+  d.mission = std::move(check.mission);
   try {
     d.choice = design::resolve_design_space(design::request_from_text(meta.architectures, meta.flavours));
   } catch (const std::invalid_argument& e) {

@@ -16,6 +16,7 @@
 #include "cli/command_registry.hpp"
 #include "cli/design_run.hpp"
 #include "cli/mission_input.hpp"
+#include "cli/resumable_runs.hpp"
 #include "control/config_string.hpp"
 #include "evaluation/results_version.hpp"
 #include "evostick/evolution.hpp"
@@ -84,17 +85,13 @@ void print_text(const evostick::Result& result, const evostick::Settings& settin
 /// Where the evolution's state goes after every generation (--state, or the file resumed from),
 /// and the state it continues from.
 struct Persistence {
-  evostick::SavedEvolution identity;  // what is evolved, with which settings; no checkpoint
-  std::filesystem::path file;         // empty: the state is not kept
+  evostick::EvolutionTarget target;
+  std::filesystem::path file;  // empty: the state is not kept
   std::optional<evostick::Checkpoint> resume;
 
   evostick::CheckpointSink sink() const {
     if (file.empty()) return {};
-    return [this](const evostick::Checkpoint& c) {
-      evostick::SavedEvolution saved = identity;
-      saved.checkpoint = c;
-      evostick::write_saved_evolution(file, saved);
-    };
+    return [this](const evostick::Checkpoint& c) { evostick::write_saved_evolution(file, target, c); };
   }
   const evostick::Checkpoint* from() const { return resume ? &*resume : nullptr; }
 };
@@ -144,59 +141,44 @@ void run_mission(const Options& o, const Mission& mission, const Persistence& ke
   if (!o.output.empty()) std::cout << "Written to " << o.output << "\n";
 }
 
-/// The mission a saved evolution was made for, unchanged since.
-Mission saved_mission(const evostick::SavedEvolution& saved, const std::string& file) {
-  Mission mission;
-  try {
-    mission = load_mission(saved.mission);
-  } catch (const MissionError& e) {
-    throw std::runtime_error("the mission of the evolution in " + file + " cannot be loaded: " + e.what());
-  }
-  if (mission.digest != saved.mission_digest)
-    throw std::runtime_error("the mission " + saved.mission + " has changed since the evolution in " + file +
-                             " started, and resuming would mix runs of two missions; restore it, or start anew");
-  return mission;
-}
-
 void resume_evolution(Options o) {
-  const evostick::SavedEvolution saved = evostick::read_saved_evolution(o.resume);
-  if (saved.results_version != kResultsVersion)
-    throw std::runtime_error("the evolution in " + o.resume +
-                             " was run by a swarmdesign whose simulations score differently (results version " +
-                             std::to_string(saved.results_version) + ", this one " + std::to_string(kResultsVersion) +
-                             "); finish it with that version, or start anew");
-  o.settings = saved.settings;
+  evostick::SavedEvolution saved = evostick::read_saved_evolution(o.resume);
+  const evostick::EvolutionTarget& target = saved.target;
+  const std::string what = "the evolution in " + o.resume;
+  if (const std::string refusal = results_version_refusal(what, target.results_version); !refusal.empty())
+    throw std::runtime_error(refusal);  // first: a module has no mission file to check
+  o.settings = target.settings;
   try {
     o.settings.validate();
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error(o.resume + " is a damaged EvoStick state file (" + e.what() + ")");
   }
-  Persistence keep{saved, o.resume, saved.checkpoint};
-  keep.identity.checkpoint = {};
-  if (!saved.module.empty()) {
-    o.module = saved.module;
+  const Persistence keep{target, o.resume, std::move(saved.checkpoint)};
+  if (!target.module.empty()) {
+    o.module = target.module;
     run_module(o, keep);
   } else {
-    const Mission mission = saved_mission(saved, o.resume);
-    run_mission(o, mission, keep);
+    const ResumeCheck check = check_resumable(what, target.mission, target.mission_digest, target.results_version);
+    if (!check.refusal.empty()) throw std::runtime_error(check.refusal);
+    run_mission(o, check.mission, keep);
   }
 }
 
 void start_evolution(const Options& o) {
   Persistence keep;
   keep.file = o.state;
-  keep.identity.settings = o.settings;
-  keep.identity.results_version = kResultsVersion;
+  keep.target.settings = o.settings;
+  keep.target.results_version = kResultsVersion;
   if (!o.state.empty() && std::filesystem::exists(o.state))
     throw UsageError("--state: " + o.state + " already holds an evolution; continue it with --resume " + o.state);
   if (!o.module.empty()) {
-    keep.identity.module = o.module;
+    keep.target.module = o.module;
     run_module(o, keep);
     return;
   }
   const Mission mission = load_mission_or_usage(o.mission);
-  keep.identity.mission = mission_reference(o.mission);
-  keep.identity.mission_digest = mission.digest;
+  keep.target.mission = mission_reference(o.mission);
+  keep.target.mission_digest = mission.digest;
   run_mission(o, mission, keep);
 }
 

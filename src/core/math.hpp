@@ -60,25 +60,27 @@ constexpr double horner(double z, const std::array<double, N>& c) {
   return p;
 }
 
-/// The N coefficients sign / (first + 2k)!, k = 0..N-1, with the sign alternating from -.
-template <std::size_t N>
-constexpr std::array<double, N> alternating_inverse_factorials(int first) {
+/// A series' N coefficients term(0), ..., term(N - 1), computed at compile time.
+template <std::size_t N, typename Term>
+constexpr std::array<double, N> series(Term term) {
   std::array<double, N> c{};
-  for (std::size_t k = 0; k < N; ++k) c[k] = (k % 2 == 0 ? -1.0 : 1.0) / factorial(first + 2 * static_cast<int>(k));
+  for (std::size_t k = 0; k < N; ++k) c[k] = term(static_cast<int>(k));
   return c;
 }
+/// -1, +1, -1, ...: the signs of the sin, cos and atan series after their first term.
+constexpr double alternating(int k) { return k % 2 == 0 ? -1.0 : 1.0; }
 
 /// sin r = r + r z (-1/3! + z/5! - ... + z^7/17!) with z = r^2, for |r| <= pi/4: the next
 /// term is below 1e-19.
 inline double sin_kernel(double r) {
-  constexpr auto kSeries = alternating_inverse_factorials<8>(3);
+  constexpr auto kSeries = series<8>([](int k) { return alternating(k) / factorial(3 + 2 * k); });
   const double z = r * r;
   return r + r * (z * horner(z, kSeries));
 }
 
 /// cos r = 1 + z (-1/2! + z/4! - ... + z^7/16!), for |r| <= pi/4: the next term is below 3e-18.
 inline double cos_kernel(double r) {
-  constexpr auto kSeries = alternating_inverse_factorials<8>(2);
+  constexpr auto kSeries = series<8>([](int k) { return alternating(k) / factorial(2 + 2 * k); });
   const double z = r * r;
   return 1.0 + z * horner(z, kSeries);
 }
@@ -113,11 +115,7 @@ inline Split atan_unit(double a) {
   const double c = j * 0.125;
   const double t = (a - c) / (1.0 + a * c);  // a - c is exact (Sterbenz)
   // atan t = t + t z (-1/3 + z/5 - ... - z^6/15) with z = t^2.
-  constexpr auto kSeries = [] {
-    std::array<double, 7> series{};
-    for (std::size_t k = 0; k < series.size(); ++k) series[k] = (k % 2 == 0 ? -1.0 : 1.0) / static_cast<double>(3 + 2 * k);
-    return series;
-  }();
+  constexpr auto kSeries = series<7>([](int k) { return alternating(k) / (3.0 + 2 * k); });
   const double z = t * t;
   const double p = horner(z, kSeries);
   const auto k = static_cast<std::size_t>(j);
@@ -202,11 +200,7 @@ inline double log(double x) {
   const double f = m - 1.0;  // exact
   const double s = f / (2.0 + f);
   const double z = s * s;
-  constexpr auto kSeries = [] {  // 2/3, 2/5, ..., 2/21
-    std::array<double, 10> series{};
-    for (std::size_t k = 0; k < series.size(); ++k) series[k] = 2.0 / static_cast<double>(3 + 2 * k);
-    return series;
-  }();
+  constexpr auto kSeries = series<10>([](int k) { return 2.0 / (3.0 + 2 * k); });  // 2/3, ..., 2/21
   const double q = horner(z, kSeries);
   const double log_m = 2.0 * s + s * (z * q);
   const auto ed = static_cast<double>(e);

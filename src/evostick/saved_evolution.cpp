@@ -17,19 +17,6 @@ using nlohmann::json;
 constexpr const char* kFormat = "swarmdesign-evostick-state";
 constexpr int kFormatVersion = 1;
 
-Settings settings_from_json(const json& j) {
-  Settings s;
-  j.at("seed").get_to(s.seed);
-  j.at("population").get_to(s.population);
-  j.at("evaluations").get_to(s.evaluations);
-  j.at("elites").get_to(s.elites);
-  j.at("mutation_sigma").get_to(s.mutation_sigma);
-  j.at("mutation_probability").get_to(s.mutation_probability);
-  j.at("weight_bound").get_to(s.weight_bound);
-  j.at("generations").get_to(s.generations);
-  return s;
-}
-
 std::uint64_t digest_from_text(const std::string& text) {
   std::size_t used = 0;
   const std::uint64_t value = std::stoull(text, &used, 16);
@@ -39,17 +26,16 @@ std::uint64_t digest_from_text(const std::string& text) {
 
 }  // namespace
 
-void write_saved_evolution(const std::filesystem::path& file, const SavedEvolution& saved) {
-  const Checkpoint& c = saved.checkpoint;
+void write_saved_evolution(const std::filesystem::path& file, const EvolutionTarget& target, const Checkpoint& c) {
   json population = json::array();
   for (const arlequin::Weights& w : c.population) population.push_back(w);
   const json doc{{"format", kFormat},
                  {"version", kFormatVersion},
-                 {"mission", saved.mission},
-                 {"mission_digest", saved.mission_digest},
-                 {"module", saved.module},
-                 {"settings", settings_json(saved.settings)},
-                 {"results_version", saved.results_version},
+                 {"mission", target.mission},
+                 {"mission_digest", target.mission_digest},
+                 {"module", target.module},
+                 {"settings", settings_json(target.settings)},
+                 {"results_version", target.results_version},
                  {"generation", c.generation},
                  {"population", std::move(population)},
                  {"rng", {{"s", c.rng.s}, {"coarse_bits", c.rng.coarse_bits}, {"coarse_left", c.rng.coarse_left}}},
@@ -80,11 +66,12 @@ SavedEvolution read_saved_evolution(const std::filesystem::path& file) {
       throw std::runtime_error(file.string() + " has state format version " + doc.at("version").dump() +
                                "; this swarmdesign reads version " + std::to_string(kFormatVersion));
     SavedEvolution saved;
-    doc.at("mission").get_to(saved.mission);
-    doc.at("mission_digest").get_to(saved.mission_digest);
-    doc.at("module").get_to(saved.module);
-    saved.settings = settings_from_json(doc.at("settings"));
-    doc.at("results_version").get_to(saved.results_version);
+    EvolutionTarget& t = saved.target;
+    doc.at("mission").get_to(t.mission);
+    doc.at("mission_digest").get_to(t.mission_digest);
+    doc.at("module").get_to(t.module);
+    t.settings = settings_from_json(doc.at("settings"));
+    doc.at("results_version").get_to(t.results_version);
     Checkpoint& c = saved.checkpoint;
     doc.at("generation").get_to(c.generation);
     for (const json& w : doc.at("population")) c.population.push_back(w.get<arlequin::Weights>());

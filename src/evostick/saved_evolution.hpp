@@ -13,16 +13,21 @@
 
 namespace sd::evostick {
 
-struct SavedEvolution {
+/// What is evolved and how: what a resume must continue unchanged.
+struct EvolutionTarget {
   std::string mission;         // catalogue name or absolute path; empty when a module is trained
   std::string mission_digest;  // Mission::digest of that mission
   std::string module;          // module name; empty for a mission
   Settings settings;
   int results_version = 0;     // kResultsVersion of the build that wrote it
+};
+
+struct SavedEvolution {
+  EvolutionTarget target;
   Checkpoint checkpoint;
 };
 
-void write_saved_evolution(const std::filesystem::path& file, const SavedEvolution& saved);
+void write_saved_evolution(const std::filesystem::path& file, const EvolutionTarget& target, const Checkpoint& checkpoint);
 
 /// std::runtime_error with a one-line reason when `file` is missing, not such a state or damaged.
 SavedEvolution read_saved_evolution(const std::filesystem::path& file);

@@ -30,6 +30,19 @@ nlohmann::json settings_json(const Settings& s) {
           {"generations", s.generations}};
 }
 
+Settings settings_from_json(const nlohmann::json& j) {
+  Settings s;
+  j.at("seed").get_to(s.seed);
+  j.at("population").get_to(s.population);
+  j.at("evaluations").get_to(s.evaluations);
+  j.at("elites").get_to(s.elites);
+  j.at("mutation_sigma").get_to(s.mutation_sigma);
+  j.at("mutation_probability").get_to(s.mutation_probability);
+  j.at("weight_bound").get_to(s.weight_bound);
+  j.at("generations").get_to(s.generations);
+  return s;
+}
+
 std::string digest_text(std::uint64_t digest) {
   char text[19];
   std::snprintf(text, sizeof text, "0x%016llx", static_cast<unsigned long long>(digest));

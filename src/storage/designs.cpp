@@ -178,14 +178,14 @@ void Designs::finish(std::int64_t design_id, const std::string& best_config, dou
   transaction.commit();
 }
 
-void Designs::abandon(std::int64_t design_id) { fail(design_id, "('interrupted')", true); }
+void Designs::abandon(std::int64_t design_id) { fail(design_id, "('interrupted')"); }
 
-void Designs::mark_failed(std::int64_t design_id) { fail(design_id, "('running')", false); }
+void Designs::mark_failed(std::int64_t design_id) { fail(design_id, "('running', 'interrupted')"); }
 
-void Designs::fail(std::int64_t design_id, std::string_view from_states, bool mark_dead_first) {
+void Designs::fail(std::int64_t design_id, std::string_view from_states) {
   Database& db = workspace_.database();
   Transaction transaction(db);
-  if (mark_dead_first) mark_dead_designs_interrupted();  // "interrupted" may not be written yet
+  mark_dead_designs_interrupted();  // a dead design's row may still say "running"
   set_state(design_id, DesignState::failed, from_states);
   db.prepare("UPDATE designs SET finished_at = updated_at WHERE id = ?").bind(1, design_id).run();
   transaction.commit();

@@ -73,7 +73,7 @@ class Designs {
   void mark_dead_designs_interrupted();
   Design get(std::int64_t design_id);
   void set_state(std::int64_t design_id, DesignState state, std::string_view from_states);
-  void fail(std::int64_t design_id, std::string_view from_states, bool mark_dead_first);
+  void fail(std::int64_t design_id, std::string_view from_states);
 
   Workspace& workspace_;
   Project project_;
