@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/branchless.hpp"
+
 namespace sd {
 
 namespace {
@@ -42,25 +44,29 @@ double Wall::distance(Vec2 p, Vec2* outward_normal) const {
 }
 
 double Wall::segment_entry(Vec2 a, Vec2 b) const {
+  // The slab test on both axes of the box, without jumps: whether a proximity ray or a line
+  // of sight meets a wall is a coin toss for the predictor. An axis the segment runs along
+  // (|d| < 1e-15) constrains nothing if the segment lies within the slab, and rules the
+  // hit out if it does not. Entry and exit bounds are gathered first and compared once,
+  // which gives what testing after each axis gives, since the bounds only tighten.
   const Vec2 n = normal();
   const Vec2 da = a - center, db = b - center;
-  const double la[2] = {dot(da, axis), dot(da, n)};
-  const double lb[2] = {dot(db, axis), dot(db, n)};
-  const double half[2] = {half_length, half_thickness};
-  double t0 = 0.0, t1 = 1.0;
-  for (int k = 0; k < 2; ++k) {
-    const double d = lb[k] - la[k];
-    if (std::abs(d) < 1e-15) {
-      if (std::abs(la[k]) > half[k]) return 2.0;
-      continue;
-    }
-    double ta = (-half[k] - la[k]) / d, tb = (half[k] - la[k]) / d;
-    if (ta > tb) std::swap(ta, tb);
-    t0 = std::max(t0, ta);
-    t1 = std::min(t1, tb);
-    if (t0 > t1) return 2.0;
-  }
-  return t0;
+  double enter = 0.0, leave = 1.0;
+  auto slab = [&](double from, double to, double half) {
+    const double d = to - from;
+    const bool along = std::abs(d) < 1e-15;
+    const double safe_d = select(along, 1.0, d);
+    const double ta = (-half - from) / safe_d, tb = (half - from) / safe_d;
+    const double inf = std::numeric_limits<double>::infinity();
+    const bool outside = std::abs(from) > half;
+    const double lo = select(along, select(outside, inf, -inf), ta < tb ? ta : tb);
+    const double hi = select(along, select(outside, -inf, inf), ta < tb ? tb : ta);
+    enter = enter < lo ? lo : enter;
+    leave = hi < leave ? hi : leave;
+  };
+  slab(dot(da, axis), dot(db, axis), half_length);
+  slab(dot(da, n), dot(db, n), half_thickness);
+  return select(enter > leave, 2.0, enter);
 }
 
 bool ArenaModel::camera_line_of_sight(Vec3 camera, Vec3 led, int skip_wall) const {

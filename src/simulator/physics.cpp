@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "simulator/epuck.hpp"
+#include "simulator/sensors.hpp"
 
 namespace sd {
 
@@ -50,9 +51,20 @@ void Physics::step(const ArenaModel& arena, SwarmState& swarm) {
   const double reach = max_speed * epuck::kTickSeconds + 1e-3;
   pair_candidates_.clear();
   const double pair_limit = 2.0 * kRadius + 2.0 * reach;
-  for (const RobotPair& pair : swarm.pairs) {
-    const Vec2 d = swarm.position[pair.b] - swarm.position[pair.a];
-    if (d.squared_length() < pair_limit * pair_limit) pair_candidates_.push_back({pair.a, pair.b});
+  const double pair_limit_sq = pair_limit * pair_limit;
+  const SensorWorkspace& sensed = swarm.sensing;
+  if (pair_limit_sq <= kProximityPairRange * kProximityPairRange && sensed.describes(swarm.position)) {
+    // The sensors' close pairs of the last tick, still exact, hold every candidate, in pair
+    // order, with the same squared distances: a few pairs to test instead of all of them.
+    for (int k = 0; k < sensed.close_pair_count; ++k) {
+      const RobotPair& pair = swarm.pairs[sensed.close_pairs[static_cast<std::size_t>(k)]];
+      if (pair.distance_sq < pair_limit_sq) pair_candidates_.push_back({pair.a, pair.b});
+    }
+  } else {
+    for (const RobotPair& pair : swarm.pairs) {
+      const Vec2 d = swarm.position[pair.b] - swarm.position[pair.a];
+      if (d.squared_length() < pair_limit_sq) pair_candidates_.push_back({pair.a, pair.b});
+    }
   }
   wall_candidates_.clear();
   for (int i = 0; i < n; ++i)

@@ -212,22 +212,21 @@ bool no_robot_between(const SwarmState& swarm, const RobotPair& pair) {
   // lies within r of the line. (Its distance to an end would also do, but no body comes
   // within r of another's centre, and the two ends themselves project onto the segment's
   // ends, so they are not counted.) One branch-free pass over the coordinate arrays, which
-  // vectorises; the count is a double, like the coordinates, for the same reason.
+  // vectorises: a hit selects 1 instead of adding it, so no lane waits for the sum of another.
   const double ax = swarm.sensing.position_x[pair.a], ay = swarm.sensing.position_y[pair.a];
   const double abx = pair.delta.x, aby = pair.delta.y;
   const double len2 = pair.distance_sq;
   const double line_limit = kRadius * kRadius * len2;
   const double* x = swarm.sensing.position_x.data();
   const double* y = swarm.sensing.position_y.data();
-  double hits = 0.0;
+  double hit = 0.0;
   for (int k = 0; k < swarm.size; ++k) {
     const double cx = x[k] - ax, cy = y[k] - ay;
     const double along = cx * abx + cy * aby;
     const double cross = cx * aby - cy * abx;
-    const double inside = along > 0.0 && along < len2 ? 1.0 : 0.0;
-    hits += cross * cross < line_limit ? inside : 0.0;
+    hit = (along > 0.0) & (along < len2) & (cross * cross < line_limit) ? 1.0 : hit;
   }
-  return hits == 0.0;
+  return hit == 0.0;
 }
 
 }  // namespace
@@ -259,22 +258,22 @@ void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, S
     received[surviving] = to_a | to_b;
     surviving += (to_a | to_b) != 0 ? 1 : 0;
   }
+  // Whether a packet arrives is a coin toss too, so each is written to its receiver's next
+  // slot and counted only if it arrived. A receiver meets each other robot once, so at most
+  // size - 2 packets precede a write: the slot is always within its stride.
   for (int n = 0; n < surviving; ++n) {
     const RobotPair& pair = swarm.pairs[kept[n]];
     const bool visible = arena.line_of_sight_walls(swarm.position[pair.a], swarm.position[pair.b]) &&
                          no_robot_between(swarm, pair);
-    if (!visible) continue;
+    const std::uint64_t arrived = visible ? received[n] : 0;
     const double distance = std::sqrt(pair.distance_sq);
     const double range_cm = distance * 100.0 - epuck::kRabRangeOffsetCm;
     const Vec2 u = pair.delta * (1.0 / distance);  // from a towards b, world frame
-    if (received[n] & 1) {
-      const Vec2 h = swarm.heading[pair.a];
-      swarm.rab[pair.a * stride + swarm.rab_count[pair.a]++] = {range_cm, {h.x * u.x + h.y * u.y, h.x * u.y - h.y * u.x}, pair.b};
-    }
-    if (received[n] & 2) {
-      const Vec2 h = swarm.heading[pair.b];
-      swarm.rab[pair.b * stride + swarm.rab_count[pair.b]++] = {range_cm, {-(h.x * u.x + h.y * u.y), -(h.x * u.y - h.y * u.x)}, pair.a};
-    }
+    const Vec2 ha = swarm.heading[pair.a], hb = swarm.heading[pair.b];
+    swarm.rab[pair.a * stride + swarm.rab_count[pair.a]] = {range_cm, {ha.x * u.x + ha.y * u.y, ha.x * u.y - ha.y * u.x}, pair.b};
+    swarm.rab_count[pair.a] = static_cast<std::uint16_t>(swarm.rab_count[pair.a] + (arrived & 1));
+    swarm.rab[pair.b * stride + swarm.rab_count[pair.b]] = {range_cm, {-(hb.x * u.x + hb.y * u.y), -(hb.x * u.y - hb.y * u.x)}, pair.a};
+    swarm.rab_count[pair.b] = static_cast<std::uint16_t>(swarm.rab_count[pair.b] + (arrived >> 1));
   }
 }
 

@@ -45,6 +45,15 @@ struct SensorWorkspace {
   /// The positions as two plain arrays: the line-of-sight tests scan every robot at once,
   /// and contiguous coordinates let that scan vectorise.
   std::vector<double> position_x, position_y;
+
+  /// True if the close pairs and the pair table were computed from exactly these positions
+  /// (nothing moved a robot since update_pairs): then physics may take its contact
+  /// candidates from them instead of scanning every pair again.
+  bool describes(const std::vector<Vec2>& position) const {
+    bool same = position.size() == position_x.size();
+    for (std::size_t i = 0; same && i < position.size(); ++i) same = position[i].x == position_x[i] && position[i].y == position_y[i];
+    return same;
+  }
   /// Range and bearing: the pairs kept by the range and loss filters, and per kept pair who
   /// receives (bit 0: a, bit 1: b).
   std::vector<std::uint16_t> rab_pairs;

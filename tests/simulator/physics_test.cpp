@@ -6,6 +6,7 @@
 #include "core/rng.hpp"
 #include "simulator/epuck.hpp"
 #include "simulator/physics.hpp"
+#include "simulator/sensors.hpp"
 
 namespace sd {
 namespace {
@@ -169,6 +170,49 @@ TEST(Physics, NoOverlapGrowsInALongCrowdedRandomRun) {
     EXPECT_LT(std::abs(s.position[i].x), 0.4);
     EXPECT_LT(std::abs(s.position[i].y), 0.4);
   }
+}
+
+TEST(Physics, ContactsFromTheSensorsPairTableMatchAFullScan) {
+  // A crowded run stepped twice: one swarm has its pair table refreshed after every step (as
+  // a simulation does, so physics takes its candidates from the sensors' close pairs), the
+  // other never does (physics scans every pair). Every few steps a robot is moved after the
+  // refresh, as a mission's arrest rule does, which makes the table stale. The two must move
+  // bit for bit alike.
+  const ArenaModel arena = square_arena(0.3);
+  Rng rng(11);
+  const int n = 24;
+  SwarmState sensed, scanned;
+  sensed.resize(n);
+  for (int i = 0; i < n; ++i) {
+    sensed.position[i] = {-0.24 + 0.08 * (i % 6), -0.24 + 0.08 * (i / 6)};
+    sensed.yaw[i] = rng.uniform(-kPi, kPi);
+    sensed.heading[i] = Vec2::polar(1.0, sensed.yaw[i]);
+  }
+  scanned = sensed;
+  Physics with_table, without_table;
+  with_table.reset(n);
+  without_table.reset(n);
+  int stale_steps = 0;
+  for (int t = 0; t < 1500; ++t) {
+    if (t % 10 == 0)
+      for (int i = 0; i < n; ++i) {
+        sensed.wheel_left[i] = scanned.wheel_left[i] = rng.uniform(-0.12, 0.16);
+        sensed.wheel_right[i] = scanned.wheel_right[i] = rng.uniform(-0.12, 0.16);
+      }
+    with_table.step(arena, sensed);
+    without_table.step(arena, scanned);
+    update_pairs(sensed);
+    if (t % 7 == 3) {  // teleport a robot next to another one, after the refresh
+      const int i = t % n, j = (t + 5) % n;
+      sensed.position[i] = scanned.position[i] = sensed.position[j] + Vec2{2.0 * kR + 1e-4, 0.0};
+      ++stale_steps;
+    }
+    for (int i = 0; i < n; ++i) {
+      ASSERT_EQ(sensed.position[i], scanned.position[i]) << "robot " << i << " at step " << t;
+      ASSERT_EQ(sensed.velocity[i], scanned.velocity[i]) << "robot " << i << " at step " << t;
+    }
+  }
+  EXPECT_GT(stale_steps, 200);
 }
 
 }  // namespace
