@@ -43,30 +43,47 @@ double Wall::distance(Vec2 p, Vec2* outward_normal) const {
   return -(half_thickness - std::abs(ly));
 }
 
-double Wall::segment_entry(Vec2 a, Vec2 b) const {
-  // The slab test on both axes of the box, without jumps: whether a proximity ray or a line
-  // of sight meets a wall is a coin toss for the predictor. An axis the segment runs along
-  // (|d| < 1e-15) constrains nothing if the segment lies within the slab, and rules the
-  // hit out if it does not. Entry and exit bounds are gathered first and compared once,
-  // which gives what testing after each axis gives, since the bounds only tighten.
-  const Vec2 n = normal();
-  const Vec2 da = a - center, db = b - center;
+namespace {
+
+/// The slab test of segment_entry for one segment given by its ends' coordinates, written
+/// without jumps: whether a proximity ray or a line of sight meets a wall is a coin toss for
+/// the predictor. `pick(c, a, b)` is `c ? a : b`: sd::select for one segment (GCC would
+/// jump on a plain conditional), a plain conditional in a loop over segments (which then
+/// vectorises, and select's bit masks would stop it). An axis the segment runs along
+/// (|d| < 1e-15) constrains nothing if the segment lies within the slab, and rules the hit
+/// out if it does not. Entry and exit bounds are gathered first and compared once, which
+/// gives what testing after each axis gives, since the bounds only tighten.
+template <typename Pick>
+inline double slab_entry(const Wall& wall, double ax, double ay, double bx, double by, Pick pick) {
+  const Vec2 n = wall.normal();
+  const double dax = ax - wall.center.x, day = ay - wall.center.y;
+  const double dbx = bx - wall.center.x, dby = by - wall.center.y;
   double enter = 0.0, leave = 1.0;
   auto slab = [&](double from, double to, double half) {
     const double d = to - from;
     const bool along = std::abs(d) < 1e-15;
-    const double safe_d = select(along, 1.0, d);
+    const double safe_d = pick(along, 1.0, d);
     const double ta = (-half - from) / safe_d, tb = (half - from) / safe_d;
     const double inf = std::numeric_limits<double>::infinity();
     const bool outside = std::abs(from) > half;
-    const double lo = select(along, select(outside, inf, -inf), ta < tb ? ta : tb);
-    const double hi = select(along, select(outside, -inf, inf), ta < tb ? tb : ta);
-    enter = enter < lo ? lo : enter;
-    leave = hi < leave ? hi : leave;
+    const double lo = pick(along, pick(outside, inf, -inf), pick(ta < tb, ta, tb));
+    const double hi = pick(along, pick(outside, -inf, inf), pick(ta < tb, tb, ta));
+    enter = pick(enter < lo, lo, enter);
+    leave = pick(hi < leave, hi, leave);
   };
-  slab(dot(da, axis), dot(db, axis), half_length);
-  slab(dot(da, n), dot(db, n), half_thickness);
-  return select(enter > leave, 2.0, enter);
+  slab(dax * wall.axis.x + day * wall.axis.y, dbx * wall.axis.x + dby * wall.axis.y, wall.half_length);
+  slab(dax * n.x + day * n.y, dbx * n.x + dby * n.y, wall.half_thickness);
+  return pick(enter > leave, 2.0, enter);
+}
+
+}  // namespace
+
+double Wall::segment_entry(Vec2 a, Vec2 b) const { return slab_entry(*this, a.x, a.y, b.x, b.y, select); }
+
+void Wall::segment_entries(const SegmentBatch& segments, std::span<double, SegmentBatch::kSize> t) const {
+  auto pick = [](bool c, double a, double b) { return c ? a : b; };
+  for (std::size_t k = 0; k < SegmentBatch::kSize; ++k)
+    t[k] = slab_entry(*this, segments.ax[k], segments.ay[k], segments.bx[k], segments.by[k], pick);
 }
 
 bool ArenaModel::camera_line_of_sight(Vec3 camera, Vec3 led, int skip_wall) const {

@@ -2,6 +2,7 @@
 // The arena a swarm lives in, compiled once per mission and then only read (the MuJoCo
 // model/data split): walls, floor colours, lights, and lookup tables derived from them so
 // that the per-tick queries touch only the walls that can matter.
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -11,6 +12,12 @@
 #include "simulator/region.hpp"
 
 namespace sd {
+
+/// Eight segments as coordinate arrays (a robot's proximity rays), for Wall::segment_entries.
+struct SegmentBatch {
+  static constexpr std::size_t kSize = 8;
+  std::array<double, kSize> ax, ay, bx, by;
+};
 
 /// A static box wall: a rectangle in the plane, extruded to `height`.
 struct Wall {
@@ -27,6 +34,8 @@ struct Wall {
   double distance(Vec2 p, Vec2* outward_normal) const;
   /// First parameter t in [0, 1] where the segment a->b enters the rectangle, or a value > 1.
   double segment_entry(Vec2 a, Vec2 b) const;
+  /// segment_entry of each segment of the batch, exactly, in one pass that vectorises.
+  void segment_entries(const SegmentBatch& segments, std::span<double, SegmentBatch::kSize> t) const;
 };
 
 struct FloorPatch {

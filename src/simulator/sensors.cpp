@@ -125,14 +125,27 @@ void sense_proximity(const ArenaModel& arena, const RobotModel& model, SwarmStat
       continue;
     }
     const Vec2 p = swarm.position[i], h = swarm.heading[i];
+    SegmentBatch rays;
+    bool rays_ready = false;
     for (const std::uint16_t w : arena.walls_near(p)) {
       const Wall& wall = arena.walls[w];
       if (wall.distance(p, nullptr) > kRing + epuck::kProximityRange) continue;
-      for (int k = 0; k < 8; ++k) {
-        const Vec2 dir{h.x * kRays.cos[k] - h.y * kRays.sin[k], h.y * kRays.cos[k] + h.x * kRays.sin[k]};
-        const Vec2 origin = p + dir * kRing;
-        const double t = wall.segment_entry(origin, origin + dir * epuck::kProximityRange);
-        if (t <= 1.0) reading[k] = std::min(reading[k], t * epuck::kProximityRange);
+      if (!rays_ready) {  // the 8 rays as segments, once per robot near a wall
+        for (std::size_t k = 0; k < 8; ++k) {
+          const Vec2 dir{h.x * kRays.cos[k] - h.y * kRays.sin[k], h.y * kRays.cos[k] + h.x * kRays.sin[k]};
+          const Vec2 origin = p + dir * kRing, end = origin + dir * epuck::kProximityRange;
+          rays.ax[k] = origin.x;
+          rays.ay[k] = origin.y;
+          rays.bx[k] = end.x;
+          rays.by[k] = end.y;
+        }
+        rays_ready = true;
+      }
+      std::array<double, 8> t;
+      wall.segment_entries(rays, t);
+      for (std::size_t k = 0; k < 8; ++k) {
+        const double hit = t[k] * epuck::kProximityRange;
+        reading[k] = t[k] <= 1.0 && hit < reading[k] ? hit : reading[k];
       }
     }
     for (double& v : reading) v = epuck::proximity_reading(v);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -82,6 +83,28 @@ TEST(Wall, SegmentEntryAgreesBitForBitWithThePlainSlabTest) {
   }
   EXPECT_GT(hits, 20000);
   EXPECT_GT(misses, 20000);
+}
+
+TEST(Wall, SegmentEntriesOfABatchAreEachSegmentsEntry) {
+  // The 8-ray batch the proximity sensor uses gives, ray by ray, exactly segment_entry.
+  const Wall w = tilted_wall();
+  Rng rng(9);
+  for (int round = 0; round < 20000; ++round) {
+    SegmentBatch batch;
+    for (std::size_t k = 0; k < SegmentBatch::kSize; ++k) {
+      const Vec2 a = w.center + Vec2::polar(rng.uniform(0.0, 0.4), rng.uniform(-kPi, kPi));
+      const Vec2 b = (k % 3 == 0) ? a + w.axis * rng.uniform(-0.1, 0.1) : a + Vec2::polar(0.1, rng.uniform(-kPi, kPi));
+      batch.ax[k] = a.x;
+      batch.ay[k] = a.y;
+      batch.bx[k] = b.x;
+      batch.by[k] = b.y;
+    }
+    std::array<double, SegmentBatch::kSize> t;
+    w.segment_entries(batch, t);
+    for (std::size_t k = 0; k < SegmentBatch::kSize; ++k)
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(t[k]),
+                std::bit_cast<std::uint64_t>(w.segment_entry({batch.ax[k], batch.ay[k]}, {batch.bx[k], batch.by[k]})));
+  }
 }
 
 }  // namespace
