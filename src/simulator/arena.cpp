@@ -78,7 +78,9 @@ inline double slab_entry(const Wall& wall, double ax, double ay, double bx, doub
 
 }  // namespace
 
-double Wall::segment_entry(Vec2 a, Vec2 b) const { return slab_entry(*this, a.x, a.y, b.x, b.y, select); }
+double Wall::segment_entry(Vec2 a, Vec2 b) const {
+  return slab_entry(*this, a.x, a.y, b.x, b.y, [](bool c, double x, double y) { return select(c, x, y); });
+}
 
 void Wall::segment_entries(const SegmentBatch& segments, std::span<double, SegmentBatch::kSize> t) const {
   auto pick = [](bool c, double a, double b) { return c ? a : b; };
