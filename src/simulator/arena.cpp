@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/branchless.hpp"
+#include "core/vector_clones.hpp"
 
 namespace sd {
 
@@ -82,7 +83,7 @@ double Wall::segment_entry(Vec2 a, Vec2 b) const {
   return slab_entry(*this, a.x, a.y, b.x, b.y, [](bool c, double x, double y) { return select(c, x, y); });
 }
 
-void Wall::segment_entries(const SegmentBatch& segments, std::span<double, SegmentBatch::kSize> t) const {
+SD_VECTOR_CLONES void Wall::segment_entries(const SegmentBatch& segments, std::span<double, SegmentBatch::kSize> t) const {
   auto pick = [](bool c, double a, double b) { return c ? a : b; };
   for (std::size_t k = 0; k < SegmentBatch::kSize; ++k)
     t[k] = slab_entry(*this, segments.ax[k], segments.ay[k], segments.bx[k], segments.by[k], pick);

@@ -6,6 +6,7 @@
 
 #include "core/branchless.hpp"
 #include "core/math.hpp"
+#include "core/vector_clones.hpp"
 #include "simulator/epuck.hpp"
 
 namespace sd {
@@ -220,7 +221,7 @@ namespace {
 
 /// True if no other robot's body touches the segment between the two robots of `pair`. The
 /// RAB ray runs at 5.2 cm, below every body's top, so any body on it blocks the packet.
-bool no_robot_between(const SwarmState& swarm, const RobotPair& pair) {
+SD_VECTOR_CLONES bool no_robot_between(const SwarmState& swarm, const RobotPair& pair) {
   // A body touches the segment a-b when its centre projects strictly inside the segment and
   // lies within r of the line. (Its distance to an end would also do, but no body comes
   // within r of another's centre, and the two ends themselves project onto the segment's
