@@ -1,12 +1,13 @@
 #pragma once
-// Small builders shared by the control tests: module instances, FSM states and a check that
-// an error message names a configuration token.
+// Small builders shared by the control tests: module instances, FSM states, a check that
+// an error message names a configuration token and a comparison of generator states.
 #include <cctype>
 #include <initializer_list>
 #include <string>
 #include <utility>
 
 #include "control/control_software.hpp"
+#include "core/rng.hpp"
 
 namespace sd::test {
 
@@ -29,6 +30,13 @@ inline ControlSoftware fsm(std::initializer_list<FsmState> states) {
   software.architecture = Architecture::Fsm;
   software.fsm.states = states;
   return software;
+}
+
+inline bool same_rng_state(const Rng& a, const Rng& b) {
+  const Rng::State x = a.state(), y = b.state();
+  for (int i = 0; i < 4; ++i)
+    if (x.s[i] != y.s[i]) return false;
+  return x.coarse_left == y.coarse_left && x.coarse_bits == y.coarse_bits;
 }
 
 /// True if `message` contains `token` as a whole token ("--n1" does not match "--n1x0").

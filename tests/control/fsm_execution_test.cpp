@@ -15,6 +15,7 @@ namespace {
 
 using test::fsm;
 using test::module;
+using test::same_rng_state;
 using test::state;
 using test::transition;
 
@@ -27,13 +28,6 @@ ReferenceModel with_ground(double g) {
   ReferenceModel rm;
   rm.ground = g;
   return rm;
-}
-
-bool same_rng_state(const Rng& a, const Rng& b) {
-  const Rng::State x = a.state(), y = b.state();
-  for (int i = 0; i < 4; ++i)
-    if (x.s[i] != y.s[i]) return false;
-  return x.coarse_left == y.coarse_left && x.coarse_bits == y.coarse_bits;
 }
 
 /// |observed - n p| within 5 standard deviations of a binomial count.
