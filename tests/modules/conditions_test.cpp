@@ -3,7 +3,11 @@
 // when the precondition holds.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <span>
+#include <vector>
 
 #include "module_test_helpers.hpp"
 #include "modules/conditions.hpp"
@@ -26,9 +30,10 @@ ReferenceModel with_neighbours(int n) {
   return rm;
 }
 
-int fire_count(const ModuleInstance& condition, const ReferenceModel& rm, int trials, Rng& rng) {
+int fire_count(const ModuleInstance& condition, const ReferenceModel& rm, int trials, Rng& rng,
+               std::span<const double> table = {}) {
   int fired = 0;
-  for (int t = 0; t < trials; ++t) fired += check_condition(condition, rm, rng);
+  for (int t = 0; t < trials; ++t) fired += check_condition(condition, rm, rng, table);
   return fired;
 }
 
@@ -139,6 +144,55 @@ TEST(ModulesNeighbourConditions, InvertedIsTheComplementDrawForDraw) {
     Rng a(static_cast<std::uint64_t>(seed)), b(static_cast<std::uint64_t>(seed));
     const bool inverted = check_condition(module(14, {3, 1.5}), with_neighbours(2), a);
     EXPECT_EQ(inverted, b.uniform() < 1.0 - logistic(3, 1.5, 2));
+  }
+}
+
+TEST(ModulesNeighboursTable, HoldsTheFunctionsValuesBitForBit) {
+  for (const int id : {13, 23, 33, 43, 53, 14, 24, 34, 44, 54}) {
+    for (const double xi : {0.0, 3.0, 5.9, 10.0}) {
+      for (const double eta : {0.0, 0.7, 5.07, 20.0}) {
+        const std::vector<double> table = neighbours_table(module(id, {xi, eta}), 19);
+        ASSERT_EQ(table.size(), 20u);
+        for (int n = 0; n < 20; ++n)
+          EXPECT_EQ(std::bit_cast<std::uint64_t>(table[static_cast<std::size_t>(n)]),
+                    std::bit_cast<std::uint64_t>(neighbours_probability(xi, eta, n)))
+              << "condition " << id << " xi " << xi << " eta " << eta << " n " << n;
+      }
+    }
+  }
+}
+
+TEST(ModulesNeighboursTable, IsEmptyForOtherConditionsAndForNoRobot) {
+  for (const int id : {10, 11, 12, 15, 25, 27, 55}) EXPECT_TRUE(neighbours_table(module(id, {0.5, 2}), 19).empty()) << id;
+  EXPECT_TRUE(neighbours_table(module(13, {3, 1}), -1).empty());
+}
+
+TEST(ModulesNeighbourConditions, LookUpTheTableOnlyForTheCountsItCovers) {
+  // A doctored table says "certain" for 0 .. 2 neighbours where the logistic (xi 9, eta 20)
+  // says "almost never": the draws show which one the condition read.
+  const ModuleInstance count = module(13, {9, 20}), inverted = module(14, {9, 20});
+  const std::vector<double> certain(3, 1.0);
+  Rng rng(9);
+  for (int n = 0; n < 3; ++n) {
+    EXPECT_EQ(fire_count(count, with_neighbours(n), 100, rng, certain), 100) << n;
+    EXPECT_EQ(fire_count(inverted, with_neighbours(n), 100, rng, certain), 0) << n;
+  }
+  for (const int n : {-1, 3, 5}) {
+    EXPECT_EQ(fire_count(count, with_neighbours(n), 100, rng, certain), 0) << n;
+    EXPECT_EQ(fire_count(inverted, with_neighbours(n), 100, rng, certain), 100) << n;
+  }
+}
+
+TEST(ModulesNeighbourConditions, DrawTheSameWithTheirTableAsWithout) {
+  for (const ModuleInstance& c : {module(13, {4, 0.8}), module(44, {2, 3.5})}) {
+    const std::vector<double> table = neighbours_table(c, 5);
+    for (int n = 0; n <= 8; ++n) {
+      Rng with(static_cast<std::uint64_t>(n)), without(static_cast<std::uint64_t>(n));
+      for (int k = 0; k < 200; ++k)
+        ASSERT_EQ(check_condition(c, with_neighbours(n), with, table), check_condition(c, with_neighbours(n), without))
+            << "condition " << c.id << " n " << n << " draw " << k;
+      EXPECT_TRUE(test::same_rng_state(with, without));
+    }
   }
 }
 
