@@ -30,7 +30,26 @@ SwarmController::SwarmController(const ControlSoftware& software, int robots)
       state_inputs_.push_back(bits);
     }
   }
+  tabulate_neighbours(robots - 1);
   reset();
+}
+
+void SwarmController::tabulate_neighbours(int max_neighbours) {
+  table_start_.push_back(0);
+  const auto add_slot = [&](const ModuleInstance* condition) {
+    if (condition) {
+      const std::vector<double> table = neighbours_table(*condition, max_neighbours);
+      neighbours_tables_.insert(neighbours_tables_.end(), table.begin(), table.end());
+    }
+    table_start_.push_back(static_cast<std::uint32_t>(neighbours_tables_.size()));
+  };
+  if (software_->architecture == Architecture::Fsm) {
+    for (const FsmState& state : software_->fsm.states)
+      for (std::size_t t = 0; t < kMaxFsmTransitions; ++t)
+        add_slot(t < state.transitions.size() ? &state.transitions[t].condition : nullptr);
+  } else if (software_->architecture == Architecture::BehaviourTree) {
+    for (const BtNode& node : software_->bt.nodes) add_slot(node.type == BtNodeType::Condition ? &node.module : nullptr);
+  }
 }
 
 void SwarmController::reset() {
@@ -68,7 +87,7 @@ inline Actuation SwarmController::step_fsm(int robot, const ReferenceModel& rm, 
   for (std::uint32_t k = count - 1; k > 0; --k) std::swap(order[k], order[rng.below(k + 1)]);
   for (std::uint32_t k = 0; k < count; ++k) {
     const FsmTransition& t = state.transitions[order[k]];
-    if (check_condition(t.condition, rm, rng)) {
+    if (check_condition(t.condition, rm, rng, neighbours_table_of(transition_slot(current, order[k])))) {
       current_[r] = static_cast<std::int16_t>(t.target);
       entering_[r] = 1;
       break;
@@ -90,7 +109,9 @@ Actuation SwarmController::step_tree(int robot, const ReferenceModel& rm, Rng& r
 inline SwarmController::Status SwarmController::tick(TreeTick& t, int node_index) {
   const BtNode& node = software_->bt.nodes[static_cast<std::size_t>(node_index)];
   if (node.type == BtNodeType::Condition)
-    return check_condition(node.module, t.rm, t.rng) ? Status::Success : Status::Failure;
+    return check_condition(node.module, t.rm, t.rng, neighbours_table_of(static_cast<std::size_t>(node_index)))
+               ? Status::Success
+               : Status::Failure;
   if (node.type == BtNodeType::Action) return tick_action(t, node_index);
   return tick_composite(t, node_index);
 }

@@ -4,6 +4,7 @@
 // software itself is shared.
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "control/control_software.hpp"
@@ -58,6 +59,18 @@ class SwarmController {
   Status tick(TreeTick& t, int node);
   Status tick_action(TreeTick& t, int node);
   Status tick_composite(TreeTick& t, int node);
+  /// Fills neighbours_tables_ and table_start_: FSM, kMaxFsmTransitions slots per state in
+  /// transition_slot order; tree, one slot per node.
+  void tabulate_neighbours(int max_neighbours);
+  /// The condition slot of an FSM state's transition.
+  static std::size_t transition_slot(std::size_t state, std::size_t transition) {
+    return state * static_cast<std::size_t>(kMaxFsmTransitions) + transition;
+  }
+  /// The neighbours_table of the condition in `slot` (FSM: transition_slot; tree: the node),
+  /// empty for other conditions.
+  std::span<const double> neighbours_table_of(std::size_t slot) const {
+    return std::span(neighbours_tables_).subspan(table_start_[slot], table_start_[slot + 1] - table_start_[slot]);
+  }
 
   const ControlSoftware* software_;
   int slots_;                             // states (FSM) or nodes (tree) per robot
@@ -67,6 +80,11 @@ class SwarmController {
   std::vector<BehaviourMemory> memory_;   // robots x slots
   std::uint8_t all_inputs_;
   std::vector<std::uint8_t> behaviour_inputs_, state_inputs_;  // FSM, per state
+  // The (Inverted)NeighborsCount conditions' probabilities for 0 .. robots - 1 neighbours,
+  // tabulated once so that no step calls exp: slot s's table is
+  // neighbours_tables_[table_start_[s] .. table_start_[s + 1]).
+  std::vector<double> neighbours_tables_;
+  std::vector<std::uint32_t> table_start_;
 };
 
 }  // namespace sd

@@ -6,6 +6,7 @@
 #include "control/describe.hpp"
 #include "control/swarm_controller.hpp"
 #include "control_test_helpers.hpp"
+#include "modules/conditions.hpp"
 
 namespace sd {
 namespace {
@@ -135,6 +136,35 @@ TEST(BehaviourTreeTicks, AnActionThatSucceedsDoesNotRun) {
     EXPECT_EQ(c.current_state(0), 2);
     EXPECT_EQ(a.left_cm, 0.0);
   }
+}
+
+TEST(BehaviourTreeTicks, NeighbourConditionsDrawWithTheirOwnLogistic) {
+  // Selector( Sequence(NeighborsCount(2, 1.5)?, Stop), Sequence(InvertedNeighborsCount(5, 0.4)?,
+  // Stop) ) in a swarm of four: the controller tabulates each logistic for 0 .. 3 neighbours.
+  // Step for step the robot must draw and act as the functions themselves say, for counts
+  // beyond its tables too.
+  const auto t = tree({composite(BtNodeType::Selector, {1, 4}), composite(BtNodeType::Sequence, {2, 3}),
+                       condition(module(13, {2, 1.5})), action(module(11)), composite(BtNodeType::Sequence, {5, 6}),
+                       condition(module(14, {5, 0.4})), action(module(11))});
+  SwarmController c(t, 4);
+  Rng rng(47), expected(47);
+  ReferenceModel rm;
+  int ran = -1, first = 0, second = 0;
+  for (int k = 0; k < 3000; ++k) {
+    rm.neighbours = k % 7;
+    c.step(2, rm, rng);
+    if (expected.bernoulli(neighbours_probability(2, 1.5, rm.neighbours))) {
+      ran = 3;
+      ++first;
+    } else if (expected.bernoulli(1.0 - neighbours_probability(5, 0.4, rm.neighbours))) {
+      ran = 6;
+      ++second;
+    }  // else the tree failed: no action ran
+    ASSERT_EQ(c.current_state(2), ran) << "step " << k;
+    ASSERT_TRUE(test::same_rng_state(rng, expected)) << "step " << k;
+  }
+  EXPECT_GT(first, 300);
+  EXPECT_GT(second, 300);
 }
 
 }  // namespace

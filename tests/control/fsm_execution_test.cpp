@@ -9,6 +9,7 @@
 
 #include "control/swarm_controller.hpp"
 #include "control_test_helpers.hpp"
+#include "modules/conditions.hpp"
 
 namespace sd {
 namespace {
@@ -235,6 +236,34 @@ TEST(ControlFsmExecution, ConditionsSeeTheReferenceModelOfTheCurrentStep) {
   EXPECT_EQ(controller.current_state(0), 0);
   controller.step(0, with_ground(0.0), rng);
   EXPECT_EQ(controller.current_state(0), 1);
+}
+
+TEST(ControlFsmExecution, NeighbourConditionsDrawWithTheirOwnLogistic) {
+  // 0 --NeighborsCount(2, 1.5)--> 1 --InvertedNeighborsCount(5, 0.4)--> 0 in a swarm of four:
+  // the controller tabulates each logistic for 0 .. 3 neighbours. Step for step the robot
+  // must draw and move as the functions themselves say, for counts beyond its tables too.
+  const ModuleInstance count = module(13, {2, 1.5}), inverted = module(14, {5, 0.4});
+  const ControlSoftware software = fsm({state(module(11), {transition(1, count)}), state(module(11), {transition(0, inverted)})});
+  SwarmController controller(software, 4);
+  Rng rng(31), expected(31);
+  ReferenceModel rm;
+  int state_now = 0, moves = 0;
+  bool entering = true;
+  for (int k = 0; k < 3000; ++k) {
+    rm.neighbours = k % 7;
+    controller.step(2, rm, rng);
+    if (entering) {
+      entering = false;
+    } else if (state_now == 0 ? expected.bernoulli(neighbours_probability(2, 1.5, rm.neighbours))
+                              : expected.bernoulli(1.0 - neighbours_probability(5, 0.4, rm.neighbours))) {
+      state_now = 1 - state_now;
+      entering = true;
+      ++moves;
+    }
+    ASSERT_EQ(controller.current_state(2), state_now) << "step " << k;
+    ASSERT_TRUE(same_rng_state(rng, expected)) << "step " << k;
+  }
+  EXPECT_GT(moves, 300);
 }
 
 }  // namespace
