@@ -32,6 +32,18 @@ struct Wall {
   double bounding_radius() const;
   /// Distance from p to the wall's rectangle and the unit normal pointing from the wall to p.
   double distance(Vec2 p, Vec2* outward_normal) const;
+  /// For limit >= 0, true only if distance(p, nullptr) > limit, without its square root:
+  /// most walls a grid cell lists are far out of a robot's reach, and this rules them out
+  /// first. Outside the wall, the larger of the gaps along its axis and across it bounds the
+  /// distance from below, and kBoundMargin covers rounding, so no wall the exact test would
+  /// keep is ever ruled out. (Inside, distance() is the depth across the wall, which the
+  /// gap along it does not bound: hence no negative limit.)
+  bool surely_beyond(Vec2 p, double limit) const {
+    const Vec2 d = p - center;
+    const double gap = std::max(std::abs(dot(d, axis)) - half_length, std::abs(dot(d, normal())) - half_thickness);
+    return gap > limit + kBoundMargin;
+  }
+  static constexpr double kBoundMargin = 1e-9;  // m: orders of magnitude above any rounding in an arena
   /// First parameter t in [0, 1] where the segment a->b enters the rectangle, or a value > 1.
   double segment_entry(Vec2 a, Vec2 b) const;
   /// segment_entry of each segment of the batch, exactly, in one pass that vectorises.

@@ -7,6 +7,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <utility>
 
 #include "core/rng.hpp"
@@ -105,6 +106,50 @@ TEST(Wall, SegmentEntriesOfABatchAreEachSegmentsEntry) {
       ASSERT_EQ(std::bit_cast<std::uint64_t>(t[k]),
                 std::bit_cast<std::uint64_t>(w.segment_entry({batch.ax[k], batch.ay[k]}, {batch.bx[k], batch.by[k]})));
   }
+}
+
+TEST(Wall, SurelyBeyondNeverRulesOutAWallTheExactDistanceKeeps) {
+  // Physics::step keeps a wall if distance < limit and the proximity rays if distance <=
+  // limit, each after surely_beyond has ruled the wall out or not: both decisions are
+  // unchanged only if surely_beyond(p, limit) implies distance > limit. Random walls, tilted
+  // or not, points around their corners, along their faces and inside them, and limits at
+  // the exact distance, an ulp or a hair on either side of it, and at the bound itself
+  // (where a bound compared with >=, or with its margin the wrong way, would fail).
+  Rng rng(17);
+  const double inf = std::numeric_limits<double>::infinity();
+  int ruled_out = 0, kept_at_limit = 0;
+  for (int k = 0; k < 200000; ++k) {
+    Wall w;
+    w.center = {rng.uniform(-5.0, 5.0), rng.uniform(-5.0, 5.0)};
+    w.axis = k % 3 == 0 ? Vec2{1.0, 0.0} : k % 3 == 1 ? Vec2{0.0, -1.0} : Vec2::polar(1.0, rng.uniform(-kPi, kPi));
+    w.half_length = rng.uniform(0.005, 1.0);
+    w.half_thickness = rng.uniform(0.001, 0.05);
+    const Vec2 n = w.normal();
+    const double side_a = rng.uniform() < 0.5 ? -1.0 : 1.0, side_n = rng.uniform() < 0.5 ? -1.0 : 1.0;
+    Vec2 anchor;
+    switch (k / 3 % 3) {
+      case 0: anchor = w.center + w.axis * (side_a * w.half_length) + n * (side_n * w.half_thickness); break;  // a corner
+      case 1: anchor = w.center + w.axis * rng.uniform(-w.half_length, w.half_length) + n * (side_n * w.half_thickness); break;
+      default: anchor = w.center + w.axis * rng.uniform(-1.2, 1.2) * w.half_length + n * rng.uniform(-2.0, 2.0) * w.half_thickness;
+    }
+    const Vec2 p = anchor + Vec2::polar(rng.uniform() < 0.2 ? 0.0 : rng.uniform(0.0, 0.3), rng.uniform(-kPi, kPi));
+    const double exact = w.distance(p, nullptr);
+    const Vec2 d = p - w.center;
+    const double bound = std::max(std::abs(dot(d, w.axis)) - w.half_length, std::abs(dot(d, n)) - w.half_thickness);
+    for (const double limit : {exact, std::nextafter(exact, -inf), std::nextafter(exact, inf), exact - 1e-12, exact + 1e-12, bound,
+                               std::nextafter(bound, -inf), bound - w.kBoundMargin, rng.uniform(0.0, 0.3)}) {
+      if (limit < 0.0) continue;  // surely_beyond is for limits of a reach
+      if (w.surely_beyond(p, limit)) {
+        ASSERT_GT(exact, limit) << "p = (" << p.x << ", " << p.y << "), wall " << w.center.x << ", " << w.center.y << ", axis "
+                                << w.axis.x << ", " << w.axis.y << ", limit " << limit;
+        ++ruled_out;
+      } else if (exact <= limit && exact >= limit - 1e-12) {
+        ++kept_at_limit;
+      }
+    }
+  }
+  EXPECT_GT(ruled_out, 40000);      // the bound does spare far walls the exact test
+  EXPECT_GT(kept_at_limit, 200000);  // and many walls sat right at the limit
 }
 
 }  // namespace
