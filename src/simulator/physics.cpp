@@ -67,10 +67,16 @@ void Physics::step(const ArenaModel& arena, SwarmState& swarm) {
     }
   }
   wall_candidates_.clear();
-  for (int i = 0; i < n; ++i)
-    for (const std::uint16_t w : arena.walls_near(swarm.position[i]))
-      if (arena.walls[w].distance(swarm.position[i], nullptr) < kRadius + reach)
+  const double wall_limit = kRadius + reach;
+  for (int i = 0; i < n; ++i) {
+    const Vec2 p = swarm.position[i];
+    for (const std::uint16_t w : arena.walls_near(p)) {
+      // The bound rules out most near walls before the exact distance and its square root.
+      const Wall& wall = arena.walls[w];
+      if (!wall.surely_beyond(p, wall_limit) && wall.distance(p, nullptr) < wall_limit)
         wall_candidates_.push_back({static_cast<std::uint16_t>(i), w});
+    }
+  }
 
   // Islands of robots linked by candidate contacts. An island whose robots are all at rest
   // (no velocity, no command) cannot move during this tick, and a robot with no candidate
