@@ -130,7 +130,8 @@ void sense_proximity(const ArenaModel& arena, const RobotModel& model, SwarmStat
     bool rays_ready = false;
     for (const std::uint16_t w : arena.walls_near(p)) {
       const Wall& wall = arena.walls[w];
-      if (wall.distance(p, nullptr) > kRing + epuck::kProximityRange) continue;
+      constexpr double kReach = kRing + epuck::kProximityRange;
+      if (wall.surely_beyond(p, kReach) || wall.distance(p, nullptr) > kReach) continue;
       if (!rays_ready) {  // the 8 rays as segments, once per robot near a wall
         for (std::size_t k = 0; k < 8; ++k) {
           const Vec2 dir{h.x * kRays.cos[k] - h.y * kRays.sin[k], h.y * kRays.cos[k] + h.x * kRays.sin[k]};
