@@ -19,29 +19,14 @@ std::string module_command(const ModuleTraining& module, const Settings& s) {
   return command;
 }
 
-nlohmann::json settings_json(const Settings& s) {
-  return {{"seed", s.seed},
-          {"population", s.population},
-          {"evaluations", s.evaluations},
-          {"elites", s.elites},
-          {"mutation_sigma", s.mutation_sigma},
-          {"mutation_probability", s.mutation_probability},
-          {"weight_bound", s.weight_bound},
-          {"generations", s.generations}};
-}
+// The settings' fields by their own names, both ways; a missing one throws
+// nlohmann::json::exception naming it.
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Settings, seed, population, evaluations, elites, mutation_sigma, mutation_probability,
+                                   weight_bound, generations)
 
-Settings settings_from_json(const nlohmann::json& j) {
-  Settings s;
-  j.at("seed").get_to(s.seed);
-  j.at("population").get_to(s.population);
-  j.at("evaluations").get_to(s.evaluations);
-  j.at("elites").get_to(s.elites);
-  j.at("mutation_sigma").get_to(s.mutation_sigma);
-  j.at("mutation_probability").get_to(s.mutation_probability);
-  j.at("weight_bound").get_to(s.weight_bound);
-  j.at("generations").get_to(s.generations);
-  return s;
-}
+nlohmann::json settings_json(const Settings& s) { return s; }
+
+Settings settings_from_json(const nlohmann::json& j) { return j.get<Settings>(); }
 
 std::string digest_text(std::uint64_t digest) {
   char text[19];
