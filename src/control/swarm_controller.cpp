@@ -18,6 +18,9 @@ SwarmController::SwarmController(const ControlSoftware& software, int robots)
   running_.resize(n * static_cast<std::size_t>(slots_));
   memory_.resize(n * static_cast<std::size_t>(slots_));
   all_inputs_ = software.inputs();
+  for (const FsmState& state : software.fsm.states) prepare_behaviour(state.behaviour);
+  for (const BtNode& node : software.bt.nodes)
+    if (node.type == BtNodeType::Action) prepare_behaviour(node.module);
   if (software.architecture == Architecture::Fsm) {
     for (const FsmState& state : software.fsm.states) {
       const ModuleSpec* behaviour = find_module(ModuleKind::Behaviour, state.behaviour.id);

@@ -103,6 +103,11 @@ Actuation wheels_towards(Vec2 v) {
 
 void reset_behaviour(BehaviourMemory& memory) { memory = BehaviourMemory{}; }
 
+void prepare_behaviour(const ModuleInstance& behaviour) {
+  if (find_module(ModuleKind::Behaviour, behaviour.id) && behaviour.id / 10 == static_cast<int>(Flavour::Arlequin))
+    arlequin::shipped_weights(behaviour.id);
+}
+
 Actuation run_behaviour(const ModuleInstance& b, BehaviourMemory& memory, const ReferenceModel& rm, Rng& rng) {
   const auto& prm = b.parameters;
   switch (b.id) {

@@ -37,6 +37,9 @@ Vec2 color_vector(const ReferenceModel& rm, std::uint32_t rgb);
 Actuation wheels_towards(Vec2 v);
 
 void reset_behaviour(BehaviourMemory& memory);
+/// Loads what a behaviour reads at every step (an Arlequin module's shipped network) before
+/// the run, so that no step parses or allocates, and a missing network fails up front.
+void prepare_behaviour(const ModuleInstance& behaviour);
 Actuation run_behaviour(const ModuleInstance& behaviour, BehaviourMemory& memory, const ReferenceModel& rm, Rng& rng);
 
 }  // namespace sd
