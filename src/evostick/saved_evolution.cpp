@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/durable_file.hpp"
 #include "evostick/weight_document.hpp"
 
 namespace sd::evostick {
@@ -41,15 +42,7 @@ void write_saved_evolution(const std::filesystem::path& file, const EvolutionTar
                  {"rng", {{"s", c.rng.s}, {"coarse_bits", c.rng.coarse_bits}, {"coarse_left", c.rng.coarse_left}}},
                  {"runs", c.result.runs},
                  {"history", history_json(c.result.history)}};
-  std::filesystem::path temporary = file;
-  temporary += ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::trunc);
-    if (!out || !(out << doc.dump() << '\n') || !out.flush()) throw std::runtime_error("cannot write " + temporary.string());
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, file, error);
-  if (error) throw std::runtime_error("cannot replace " + file.string() + ": " + error.message());
+  replace_file_durably(file, doc.dump() + '\n', 0644);
 }
 
 SavedEvolution read_saved_evolution(const std::filesystem::path& file) {

@@ -4,8 +4,8 @@
 // uninterrupted evolution would. It holds what is evolved (a mission and its digest, or a
 // module), the settings, the results version of the build (a build that scores runs
 // differently must not continue it) and the Checkpoint. Doubles are written so that they read
-// back bit for bit. The file is written beside itself and renamed over the old one, so a kill
-// leaves the previous state or the new one, never a mix.
+// back bit for bit. The file is replaced durably (core/durable_file.hpp), so a kill or a power
+// cut leaves the previous state or the new one, never a mix.
 #include <filesystem>
 #include <string>
 

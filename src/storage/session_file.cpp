@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <system_error>
 
+#include "core/durable_file.hpp"
 #include "storage/errors.hpp"
 
 namespace sd::storage {
@@ -39,28 +40,7 @@ bool is_token(const std::string& text) {
 }  // namespace
 
 void write_session_file(const std::filesystem::path& path, const std::string& token) {
-  const std::filesystem::path temporary = path.string() + ".tmp-" + std::to_string(::getpid());
-  {
-    FileDescriptor file{::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600)};
-    if (file.fd < 0) fail("cannot create", temporary);
-    const std::string content = token + "\n";
-    // fchmod: the mode given to open() is masked by the umask; make it exactly 0600.
-    const bool written = ::fchmod(file.fd, 0600) == 0 &&
-                         ::write(file.fd, content.data(), content.size()) == static_cast<ssize_t>(content.size()) &&
-                         ::fsync(file.fd) == 0;
-    if (!written) {
-      const int error = errno;
-      ::unlink(temporary.c_str());
-      errno = error;
-      fail("cannot write", temporary);
-    }
-  }
-  if (::rename(temporary.c_str(), path.c_str()) != 0) {
-    const int error = errno;
-    ::unlink(temporary.c_str());
-    errno = error;
-    fail("cannot replace", path);
-  }
+  replace_file_durably(path, token + "\n", 0600);
 }
 
 std::optional<std::string> read_session_file(const std::filesystem::path& path) {
