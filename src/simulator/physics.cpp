@@ -28,9 +28,9 @@ void Physics::reset(int robots) {
   contact_robots_.reserve(n);
   for (auto* v : {&pair_candidates_, &wall_candidates_}) {
     v->clear();
-    v->reserve(n * (n - 1) / 2 + 8 * n);
+    v->reserve(pair_count(n) + 8 * n);
   }
-  close_pairs_.assign(n * (n - 1) / 2 + 1, {});  // one spare slot for the branch-free append
+  close_pairs_.assign(pair_count(n) + 1, {});  // one spare slot for the branch-free append
   start_.assign(n, {});
 }
 

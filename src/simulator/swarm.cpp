@@ -3,13 +3,13 @@
 namespace sd {
 
 void SensorWorkspace::resize(std::size_t n) {
-  const std::size_t pair_count = n * (n - 1) / 2 + 1;  // one spare slot for the branch-free appends
-  close_pairs.assign(pair_count, 0);
+  const std::size_t slots = pair_count(n) + 1;  // one spare slot for the branch-free appends
+  close_pairs.assign(slots, 0);
   close_pair_count = 0;
   position_x.assign(n, 0.0);
   position_y.assign(n, 0.0);
-  rab_pairs.assign(pair_count, 0);
-  rab_receivers.assign(pair_count, 0);
+  rab_pairs.assign(slots, 0);
+  rab_receivers.assign(slots, 0);
 }
 
 void SwarmState::resize(int robots, int arena_leds) {
@@ -35,7 +35,7 @@ void SwarmState::resize(int robots, int arena_leds) {
   blobs.assign(n * static_cast<std::size_t>(blobs_per_robot), {});
   sensing.resize(n);
   pairs.clear();
-  pairs.reserve(n * (n - 1) / 2);
+  pairs.reserve(pair_count(n));
   for (std::size_t a = 0; a < n; ++a)
     for (std::size_t b = a + 1; b < n; ++b)
       pairs.push_back({static_cast<std::uint16_t>(a), static_cast<std::uint16_t>(b), {}, 0.0});

@@ -35,6 +35,9 @@ struct RobotPair {
   double distance_sq;
 };
 
+/// Unordered pairs of `robots` robots: the length of SwarmState::pairs.
+constexpr std::size_t pair_count(std::size_t robots) { return robots * (robots - 1) / 2; }
+
 /// What the sensors derive from the poses each tick (update_pairs) or use within one
 /// sensor's pass. Nothing here outlives a tick.
 struct SensorWorkspace {
