@@ -95,9 +95,9 @@ Weights weights_from_json(std::string_view json_text, std::string_view source) {
 }
 
 const Weights& shipped_weights(int id) {
-  if (id < kFirstModuleId || id >= kFirstModuleId + static_cast<int>(kModuleNames.size()))
-    throw std::out_of_range("no Arlequin module " + std::to_string(id) + " (50-55)");
-  // Parsed once, on first use; a file that is missing or broken fails every use of its
+  if (!is_module(id)) throw std::out_of_range("no Arlequin module " + std::to_string(id) + " (50-55)");
+  // Parsed once, on first use: when control software that uses the module is prepared for a
+  // run (prepare_behaviour), never inside a tick. A file that is missing or broken fails every use of its
   // module with the same message rather than running a network of zeros.
   struct Entry {
     std::optional<Weights> weights;

@@ -51,6 +51,10 @@ Actuation drive(const Weights& weights, const ReferenceModel& rm);
 inline constexpr std::array<std::string_view, 6> kModuleNames = {"exploration",    "stop",       "phototaxis",
                                                                  "antiphototaxis", "attraction", "repulsion"};
 inline constexpr int kFirstModuleId = 50;
+/// True for the ids of the six Arlequin modules (50-55).
+inline constexpr bool is_module(int id) {
+  return id >= kFirstModuleId && id < kFirstModuleId + static_cast<int>(kModuleNames.size());
+}
 
 /// Weights shipped for module `id` (50-55), read once from the data/arlequin/<name>.json
 /// files compiled into the binary. Throws std::out_of_range for another id, and

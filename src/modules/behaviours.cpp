@@ -104,8 +104,7 @@ Actuation wheels_towards(Vec2 v) {
 void reset_behaviour(BehaviourMemory& memory) { memory = BehaviourMemory{}; }
 
 void prepare_behaviour(const ModuleInstance& behaviour) {
-  if (find_module(ModuleKind::Behaviour, behaviour.id) && behaviour.id / 10 == static_cast<int>(Flavour::Arlequin))
-    arlequin::shipped_weights(behaviour.id);
+  if (arlequin::is_module(behaviour.id)) arlequin::shipped_weights(behaviour.id);
 }
 
 Actuation run_behaviour(const ModuleInstance& b, BehaviourMemory& memory, const ReferenceModel& rm, Rng& rng) {
