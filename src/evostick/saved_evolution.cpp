@@ -42,7 +42,7 @@ void write_saved_evolution(const std::filesystem::path& file, const EvolutionTar
                  {"rng", {{"s", c.rng.s}, {"coarse_bits", c.rng.coarse_bits}, {"coarse_left", c.rng.coarse_left}}},
                  {"runs", c.result.runs},
                  {"history", history_json(c.result.history)}};
-  replace_file_durably(file, doc.dump() + '\n', 0644);
+  replace_file_durably(file, doc.dump() + '\n', 0666, Umask::Applies);  // like any file the user writes
 }
 
 SavedEvolution read_saved_evolution(const std::filesystem::path& file) {

@@ -40,7 +40,7 @@ bool is_token(const std::string& text) {
 }  // namespace
 
 void write_session_file(const std::filesystem::path& path, const std::string& token) {
-  replace_file_durably(path, token + "\n", 0600);
+  replace_file_durably(path, token + "\n", 0600, Umask::Ignored);  // exactly private
 }
 
 std::optional<std::string> read_session_file(const std::filesystem::path& path) {

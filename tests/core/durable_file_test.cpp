@@ -48,14 +48,16 @@ TEST(DurableFile, ReplacesTheContentAndLeavesNoTemporary) {
   EXPECT_EQ(std::distance(fs::directory_iterator(folder.path), fs::directory_iterator()), 1);
 }
 
-TEST(DurableFile, GivesExactlyTheAskedModeWhateverTheUmask) {
+TEST(DurableFile, GivesExactlyTheAskedModeUnlessTheUmaskApplies) {
   TempFolder folder;
   const mode_t old = ::umask(0277);
   replace_file_durably(folder.path / "token", "secret\n", 0600);
   replace_file_durably(folder.path / "shared", "open\n", 0644);
+  replace_file_durably(folder.path / "user", "data\n", 0666, Umask::Applies);
   ::umask(old);
   EXPECT_EQ(mode_of(folder.path / "token"), 0600u);
   EXPECT_EQ(mode_of(folder.path / "shared"), 0644u);
+  EXPECT_EQ(mode_of(folder.path / "user"), 0400u);  // 0666 without the umask's 0277
   EXPECT_EQ(read(folder.path / "token"), "secret\n");
 }
 
