@@ -26,7 +26,8 @@ class ExperimentRunner {
   virtual void run(std::span<const Experiment> experiments, std::span<double> costs) = 0;
 };
 
-/// Evaluates a batch on T threads. Each result is written to its own slot, so the outcome
+/// Evaluates a batch on T workers of the process's Executor (a cost function with no simulator
+/// behind it: the optimiser's tests). Each result is written to its own slot, so the outcome
 /// never depends on the thread count provided the cost function is a pure function of its
 /// experiment (configuration, instance, seed).
 class ThreadedRunner final : public ExperimentRunner {

@@ -81,10 +81,12 @@ IteratedRace::IteratedRace(const ParameterSpace& space, IraceOptions options, Ex
   if (std::isnan(options_.soft_restart_threshold)) options_.soft_restart_threshold = math::pow(10.0, -space_.digits());
 }
 
-std::string IteratedRace::fingerprint() const {
+std::string IteratedRace::fingerprint() const { return design::fingerprint(space_, options_); }
+
+std::string fingerprint(const ParameterSpace& space, const IraceOptions& o) {
   Fnv f;
-  f.add(static_cast<double>(space_.digits()));
-  for (const Parameter& p : space_.parameters()) {
+  f.add(static_cast<double>(space.digits()));
+  for (const Parameter& p : space.parameters()) {
     f.add(p.name);
     f.add(p.switch_);
     f.add(static_cast<double>(static_cast<int>(p.type)));
@@ -102,7 +104,6 @@ std::string IteratedRace::fingerprint() const {
       f.add(c.number);
     }
   }
-  const IraceOptions& o = options_;
   for (double v : {static_cast<double>(o.max_experiments), static_cast<double>(o.n_instances),
                    static_cast<double>(o.seed), static_cast<double>(o.nb_iterations),
                    static_cast<double>(o.nb_experiments_per_iteration), static_cast<double>(o.nb_configurations),
@@ -112,7 +113,7 @@ std::string IteratedRace::fingerprint() const {
                    static_cast<double>(o.soft_restart), o.soft_restart_threshold,
                    static_cast<double>(o.sample_instances), static_cast<double>(o.unique_new_configurations)})
     f.add(v);
-  for (const auto& c : o.initial_configurations) f.add(space_.render(c));
+  for (const auto& c : o.initial_configurations) f.add(space.render(c));
   return f.hex();
 }
 

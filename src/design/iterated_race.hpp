@@ -86,6 +86,8 @@ int nb_configurations_for(long long current_budget, int iteration, int mu, int e
                           std::size_t n_old_instances, int new_instances, int cap = 1024);
 /// irace computeMinimumBudget.
 long long minimum_budget(const IraceOptions& o, int min_survival, int nb_iterations);
+/// Identifies a space and options (stored in checkpoints, compared on resume); needs no engine.
+std::string fingerprint(const ParameterSpace& space, const IraceOptions& options);
 
 class IteratedRace {
  public:

@@ -1,11 +1,14 @@
 #pragma once
-// Evaluation behind one interface: the design process, the CLI and (later) MPI ranks or a
-// browser request all hand over a batch of (control software, seed) tasks and get one
-// score per task. Scores are written by task index, so a batch's result never depends on
-// how many workers computed it.
+// The evaluation seam: every caller — a design's races, `evaluate --seeds`, an evolution, a web
+// request — hands over a batch of (control software, seed) tasks and gets one score per task,
+// by index. Local threads implement it now; MPI ranks implement the same interface. Scores are
+// written by task index, so a batch's result never depends on how many workers computed it or
+// which worker computed which task.
 #include <cstdint>
-#include <functional>
+#include <memory>
 #include <span>
+#include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "control/control_software.hpp"
@@ -13,30 +16,46 @@
 
 namespace sd {
 
+class Simulation;
+
 struct EvaluationTask {
-  const ControlSoftware* software;
-  std::uint64_t seed;
+  const ControlSoftware* software = nullptr;
+  std::uint64_t seed = 0;
+  /// Tasks with the same key ≥ 0 carry the same control software, in this batch and in the
+  /// next batches of the same evaluator (a design's configuration id), so a backend may keep
+  /// their simulation built between batches. -1: no such promise.
+  std::int64_t key = -1;
 };
 
 class Evaluator {
  public:
   virtual ~Evaluator() = default;
-  /// scores[i] = the mission's natural score of tasks[i].
+  /// scores[i] = the mission's natural score of tasks[i]. One caller at a time.
   virtual void evaluate(const Mission& mission, std::span<const EvaluationTask> tasks, std::span<double> scores) = 0;
+  /// Workers it evaluates with (for reports).
+  virtual int workers() const = 0;
 };
 
-/// Evaluates on local threads (0 = all cores).
-class ThreadedEvaluator : public Evaluator {
+/// Evaluates on up to `threads` workers of the process's Executor (0: one per core). Keeps,
+/// per worker, the simulations of the keyed control software of the last batch.
+class ThreadedEvaluator final : public Evaluator {
  public:
   explicit ThreadedEvaluator(int threads = 0);
+  ~ThreadedEvaluator() override;
   void evaluate(const Mission& mission, std::span<const EvaluationTask> tasks, std::span<double> scores) override;
+  int workers() const override { return threads_; }
   int threads() const { return threads_; }
 
  private:
+  struct Slot {
+    std::unordered_map<std::int64_t, std::unique_ptr<Simulation>> keyed;
+    const ControlSoftware* unkeyed_software = nullptr;  // this batch only
+    std::unique_ptr<Simulation> unkeyed;
+  };
   int threads_;
+  const Mission* mission_ = nullptr;  // of the cached simulations
+  std::string mission_digest_;
+  std::vector<Slot> slots_;
 };
-
-/// Runs `body(index, worker)` for every index in [0, count) on `threads` threads.
-void parallel_for(std::size_t count, int threads, const std::function<void(std::size_t, int)>& body);
 
 }  // namespace sd

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "core/executor.hpp"
 #include "evaluation/simulation.hpp"
 #include "evostick/builtin_training_arenas.hpp"
 
@@ -47,12 +48,12 @@ Settings shipped_settings() {
 }
 
 MeasureEvaluator::MeasureEvaluator(Measure measure, int threads)
-    : measure_(measure), threads_(ThreadedEvaluator(threads).threads()) {}
+    : measure_(measure), threads_(resolve_threads(threads)) {}
 
 void MeasureEvaluator::evaluate(const Mission& mission, std::span<const EvaluationTask> tasks, std::span<double> scores) {
   // A fresh simulation per run: building one costs far less than its 400 ticks, and a run's
   // result does not depend on whether its Simulation was reused (evaluation/simulation.hpp).
-  parallel_for(tasks.size(), threads_, [&](std::size_t i, int) {
+  Executor::shared().run(tasks.size(), static_cast<unsigned>(threads_), [&](std::size_t i, unsigned) {
     Simulation simulation(mission, *tasks[i].software);
     MeasureObserver observer(measure_, mission);
     simulation.run(tasks[i].seed, &observer);

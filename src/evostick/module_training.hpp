@@ -36,12 +36,13 @@ inline constexpr std::uint64_t kShippedSeed = 1;
 inline constexpr int kShippedGenerations = 20;
 Settings shipped_settings();
 
-/// Scores runs with a training measure instead of the mission's objective, on local threads
-/// through ThreadedEvaluator's parallel_for; scores by task index, like every Evaluator.
+/// Scores runs with a training measure instead of the mission's objective, on local threads of
+/// the process's Executor; scores by task index, like every Evaluator.
 class MeasureEvaluator : public Evaluator {
  public:
   MeasureEvaluator(Measure measure, int threads = 0);
   void evaluate(const Mission& mission, std::span<const EvaluationTask> tasks, std::span<double> scores) override;
+  int workers() const override { return threads_; }
 
  private:
   Measure measure_;

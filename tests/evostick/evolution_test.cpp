@@ -24,6 +24,7 @@ using evostick::Settings;
 class ScriptedEvaluator : public Evaluator {
  public:
   explicit ScriptedEvaluator(double target, double noise = 0.0) : target_(target), noise_(noise) {}
+  int workers() const override { return 1; }
   void evaluate(const Mission&, std::span<const EvaluationTask> tasks, std::span<double> scores) override {
     batches.emplace_back();
     for (std::size_t i = 0; i < tasks.size(); ++i) {

@@ -1,4 +1,4 @@
-#include "storage/home.hpp"
+#include "core/home.hpp"
 
 #include <pwd.h>
 #include <unistd.h>
@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace sd::storage {
+namespace sd {
 
 namespace {
 std::string environment(const char* name) {
@@ -30,4 +30,4 @@ std::filesystem::path swarmdesign_home() {
   return (user_home_directory() / ".local" / "share" / "swarmdesign").lexically_normal();
 }
 
-}  // namespace sd::storage
+}  // namespace sd
