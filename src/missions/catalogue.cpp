@@ -1,9 +1,9 @@
 #include "missions/catalogue.hpp"
 
 #include <algorithm>
-#include <cstdlib>
 #include <map>
 
+#include "core/home.hpp"
 #include "missions/builtin_missions.hpp"
 
 namespace sd {
@@ -16,17 +16,14 @@ MissionSummary summarize(const Mission& m) {
 
 std::filesystem::path user_missions_dir() { return swarmdesign_home() / "missions"; }
 
-bool looks_like_path(const std::string& s) {
+}  // namespace
+
+bool is_mission_file(const std::string& s) {
   return s.find('/') != std::string::npos || (s.size() > 5 && s.ends_with(".json"));
 }
 
-}  // namespace
-
-std::filesystem::path swarmdesign_home() {
-  if (const char* home = std::getenv("SWARMDESIGN_HOME"); home && *home) return home;
-  if (const char* xdg = std::getenv("XDG_DATA_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "swarmdesign";
-  if (const char* h = std::getenv("HOME"); h && *h) return std::filesystem::path(h) / ".local/share/swarmdesign";
-  return std::filesystem::current_path() / ".swarmdesign";
+std::string mission_reference(const std::string& s) {
+  return is_mission_file(s) ? std::filesystem::absolute(s).lexically_normal().string() : s;
 }
 
 std::vector<MissionSummary> list_missions() {
@@ -53,7 +50,7 @@ std::vector<MissionSummary> list_missions() {
 }
 
 Mission load_mission(const std::string& name_or_path) {
-  if (looks_like_path(name_or_path)) return load_mission_file(name_or_path);
+  if (is_mission_file(name_or_path)) return load_mission_file(name_or_path);
   const auto user_file = user_missions_dir() / (name_or_path + ".json");
   std::error_code ec;
   if (std::filesystem::is_regular_file(user_file, ec)) return load_mission_file(user_file);

@@ -15,8 +15,13 @@ struct MissionSummary {
   double duration_s = 0.0;
 };
 
-/// $SWARMDESIGN_HOME, else $XDG_DATA_HOME/swarmdesign, else ~/.local/share/swarmdesign.
-std::filesystem::path swarmdesign_home();
+/// The one rule for "is this mission reference a file?": it has a '/' or ends in ".json";
+/// anything else is a catalogue name.
+bool is_mission_file(const std::string& name_or_path);
+/// A mission as it is stored for later (a project's mission, a design's, an evolution's): a
+/// catalogue name as given, a mission file by absolute path, so that it reads the same file
+/// from whatever folder the design is resumed.
+std::string mission_reference(const std::string& name_or_path);
 
 std::vector<MissionSummary> list_missions();
 bool mission_exists(const std::string& name_or_path);

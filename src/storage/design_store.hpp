@@ -71,6 +71,8 @@ class DesignStore {
   /// The last checkpoint with its whole history, or nullopt when the design saved none yet.
   /// DesignFolderError when the stored state does not fit together.
   std::optional<design::DesignState> load_state();
+  /// The number of the last checkpoint saved (0 before the first).
+  std::int64_t step() const { return step_; }
 
  private:
   DesignStore(std::filesystem::path folder, std::unique_ptr<Database> db);

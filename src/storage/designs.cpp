@@ -1,21 +1,17 @@
 #include "storage/designs.hpp"
 
-#include <signal.h>
-
-#include <cerrno>
-#include <fstream>
-#include <sstream>
 #include <vector>
 
 #include "storage/clock.hpp"
 #include "storage/errors.hpp"
+#include "storage/lease.hpp"
 
 namespace sd::storage {
 
 namespace {
 constexpr std::string_view kSelectDesigns =
     "SELECT id, architectures, flavours, mission, budget, seed, state, pid, path, best_config, best_score, "
-    "       created_at, updated_at, finished_at, process "
+    "       created_at, updated_at, finished_at, coalesce(owner, ''), coalesce(heartbeat_at, 0) "
     "FROM designs WHERE project_id = ? ";
 
 DesignState state_from(const std::string& text) {
@@ -41,48 +37,17 @@ Design read_design(const Statement& row, const Workspace& workspace) {
   design.created_at = row.integer(11);
   design.updated_at = row.integer(12);
   if (!row.is_null(13)) design.finished_at = row.integer(13);
-  if (!row.is_null(14)) design.process = row.text(14);
+  design.owner = row.text(14);
+  design.heartbeat_at = row.integer(15);
   return design;
 }
 
-/// The fields of /proc/PID/stat after the command name (which may hold spaces and
-/// parentheses): [0] is the state, [19] the start time in clock ticks since boot.
-std::vector<std::string> stat_fields(std::int64_t pid) {
-  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
-  std::string line;
-  if (!std::getline(stat, line)) return {};
-  const auto end_of_name = line.rfind(')');
-  if (end_of_name == std::string::npos) return {};
-  std::istringstream rest(line.substr(end_of_name + 1));
-  std::vector<std::string> fields;
-  for (std::string field; rest >> field;) fields.push_back(field);
-  return fields;
-}
-
-/// Boot id and start time, from the fields of /proc/PID/stat; empty when unknown.
-std::string identity_from(const std::vector<std::string>& stat) {
-  std::ifstream boot("/proc/sys/kernel/random/boot_id");
-  std::string boot_id;
-  if (stat.size() < 20 || !std::getline(boot, boot_id)) return "";
-  return boot_id + "/" + stat[19];
-}
-
-/// A process that no longer exists cannot be running a design (EPERM: it exists, not ours);
-/// nor can a zombie (killed, not yet reaped by whoever adopted it), which answers kill(pid, 0)
-/// but runs nothing; nor can one whose identity differs from the one recorded: its pid has
-/// been reused. When either identity is unknown (an older row; /proc hidden), the pid alone
-/// decides.
-bool process_alive(std::int64_t pid, const std::string& recorded_identity) {
-  if (pid <= 0 || !(::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM)) return false;
-  const auto stat = stat_fields(pid);
-  if (!stat.empty() && stat[0] == "Z") return false;
-  if (recorded_identity.empty()) return true;
-  const std::string identity = identity_from(stat);
-  return identity.empty() || identity == recorded_identity;
+/// The owner's pid, kept beside the lease for people (status).
+std::int64_t owner_pid(const std::string& owner) {
+  const auto parsed = Owner::parse(owner);
+  return parsed ? parsed->pid : 0;
 }
 }  // namespace
-
-std::string process_identity(std::int64_t pid) { return identity_from(stat_fields(pid)); }
 
 std::string to_string(DesignState state) {
   switch (state) {
@@ -99,10 +64,13 @@ Designs::Designs(Workspace& workspace, Project project) : workspace_(workspace),
 void Designs::mark_dead_designs_interrupted() {
   Database& db = workspace_.database();
   std::vector<std::int64_t> dead;  // collected first: no updates while the query is open
-  auto running = db.prepare("SELECT id, pid, coalesce(process, '') FROM designs WHERE project_id = ? AND state = 'running'");
+  auto running = db.prepare(
+      "SELECT id, coalesce(pid, 0), coalesce(owner, ''), coalesce(heartbeat_at, 0) FROM designs "
+      "WHERE project_id = ? AND state = 'running'");
   running.bind(1, project_.id);
+  const std::int64_t now = unix_now();
   while (running.step())
-    if (!process_alive(running.integer(1), running.text(2))) dead.push_back(running.integer(0));
+    if (!owner_alive(running.text(2), running.integer(3), now, running.integer(1))) dead.push_back(running.integer(0));
   for (const std::int64_t id : dead)
     db.prepare("UPDATE designs SET state = 'interrupted', updated_at = ? WHERE id = ? AND state = 'running'")
         .bind(1, unix_now()).bind(2, id).run();
@@ -127,11 +95,11 @@ Design Designs::start(const DesignRequest& request) {
 
   const std::int64_t now = unix_now();
   const auto project_folder = std::filesystem::relative(project_.folder, workspace_.home());
-  db.prepare("INSERT INTO designs (project_id, architectures, flavours, mission, budget, seed, pid, process, path, "
-             "created_at, updated_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, '', ?, ?)")
+  db.prepare("INSERT INTO designs (project_id, architectures, flavours, mission, budget, seed, pid, owner, heartbeat_at, "
+             "path, created_at, updated_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, '', ?, ?)")
       .bind(1, project_.id).bind(2, request.architectures).bind(3, request.flavours).bind(4, *project_.mission)
-      .bind(5, *project_.budget).bind(6, static_cast<std::int64_t>(request.seed)).bind(7, request.pid)
-      .bind(8, process_identity(request.pid)).bind(9, now).bind(10, now).run();
+      .bind(5, *project_.budget).bind(6, static_cast<std::int64_t>(request.seed)).bind(7, owner_pid(request.owner))
+      .bind(8, request.owner).bind(9, now).bind(10, now).bind(11, now).run();
   const std::int64_t id = db.last_insert_id();
   const auto folder = project_folder / "designs" / std::to_string(id);
   db.prepare("UPDATE designs SET path = ? WHERE id = ?").bind(1, folder.string()).bind(2, id).run();
@@ -148,7 +116,7 @@ void Designs::set_state(std::int64_t design_id, DesignState state, std::string_v
   if (db.changes() == 0) throw Conflict("design " + std::to_string(design_id) + " cannot become " + to_string(state) + " now");
 }
 
-Design Designs::resume(std::int64_t design_id, int pid) {
+Design Designs::resume(std::int64_t design_id, const std::string& owner) {
   Database& db = workspace_.database();
   Transaction transaction(db);
   mark_dead_designs_interrupted();
@@ -158,15 +126,33 @@ Design Designs::resume(std::int64_t design_id, int pid) {
   if (running.step())
     throw Conflict("design " + std::to_string(running.integer(0)) + " of project " + project_.name + " is still running");
   set_state(design_id, DesignState::running, "('interrupted', 'failed')");
-  db.prepare("UPDATE designs SET pid = ?, process = ? WHERE id = ?").bind(1, pid).bind(2, process_identity(pid)).bind(3, design_id).run();
+  db.prepare("UPDATE designs SET pid = ?, owner = ?, heartbeat_at = ? WHERE id = ?")
+      .bind(1, owner_pid(owner)).bind(2, owner).bind(3, unix_now()).bind(4, design_id).run();
   transaction.commit();
   return get(design_id);
 }
 
-void Designs::set_pid(std::int64_t design_id, int pid) {
+void Designs::set_owner(std::int64_t design_id, const std::string& owner) {
+  const std::int64_t now = unix_now();
   workspace_.database()
-      .prepare("UPDATE designs SET pid = ?, process = ?, updated_at = ? WHERE id = ? AND project_id = ? AND state = 'running'")
-      .bind(1, pid).bind(2, process_identity(pid)).bind(3, unix_now()).bind(4, design_id).bind(5, project_.id).run();
+      .prepare("UPDATE designs SET pid = ?, owner = ?, heartbeat_at = ?, updated_at = ? "
+               "WHERE id = ? AND project_id = ? AND state = 'running'")
+      .bind(1, owner_pid(owner)).bind(2, owner).bind(3, now).bind(4, now).bind(5, design_id).bind(6, project_.id).run();
+}
+
+bool Designs::heartbeat(std::int64_t design_id, const std::string& owner) {
+  Database& db = workspace_.database();
+  db.prepare("UPDATE designs SET heartbeat_at = ? WHERE id = ? AND project_id = ? AND state = 'running' AND owner = ?")
+      .bind(1, unix_now()).bind(2, design_id).bind(3, project_.id).bind(4, owner).run();
+  return db.changes() > 0;
+}
+
+void Designs::release(std::int64_t design_id, const std::string& owner) {
+  Database& db = workspace_.database();
+  db.prepare("UPDATE designs SET state = 'interrupted', updated_at = ? "
+             "WHERE id = ? AND project_id = ? AND state = 'running' AND owner = ?")
+      .bind(1, unix_now()).bind(2, design_id).bind(3, project_.id).bind(4, owner).run();
+  if (db.changes() == 0) throw Conflict("design " + std::to_string(design_id) + " is not running under this job");
 }
 
 void Designs::finish(std::int64_t design_id, const std::string& best_config, double best_score) {
@@ -204,7 +190,7 @@ std::optional<Design> Designs::latest() {
   if (!query.step()) return std::nullopt;
   Design design = read_design(query, workspace_);
   // Reading must not need the write lock: report a dead "running" design as interrupted.
-  if (design.state == DesignState::running && !process_alive(design.pid, design.process))
+  if (design.state == DesignState::running && !owner_alive(design.owner, design.heartbeat_at, unix_now(), design.pid))
     design.state = DesignState::interrupted;
   return design;
 }

@@ -15,10 +15,6 @@ namespace sd::storage {
 
 enum class DesignState { running, finished, failed, interrupted };
 
-/// Who a process is, beyond its pid: this boot's id and the process's start time, so that a
-/// pid reused by another process (after a reboot, say) is not taken for the design's.
-/// Empty when /proc cannot tell.
-std::string process_identity(std::int64_t pid);
 std::string to_string(DesignState state);
 
 /// What run-design was asked for; mission and budget are copied from the project.
@@ -26,7 +22,7 @@ struct DesignRequest {
   std::string architectures;  // e.g. "fsm,bt"
   std::string flavours;       // e.g. "chocolate,maple"
   std::uint64_t seed = 0;
-  int pid = 0;                // the process that runs the design
+  std::string owner;          // the job that runs the design: Owner::text() (storage/lease.hpp)
 };
 
 struct Design {
@@ -35,8 +31,9 @@ struct Design {
   std::int64_t budget = 0;
   std::uint64_t seed = 0;
   DesignState state = DesignState::running;
-  int pid = 0;
-  std::string process;  // process_identity(pid) when it took the design; empty in older rows
+  std::string owner;             // Owner::text() of the job that runs or ran it
+  int pid = 0;                   // the owner's process (for people)
+  std::int64_t heartbeat_at = 0; // the owner's last renewal of its lease
   std::filesystem::path folder;  // absolute; holds the race data
   std::optional<std::string> best_config;
   std::optional<double> best_score;
@@ -51,20 +48,24 @@ class Designs {
 
   /// Records a running design and creates its folder <project>/designs/<id>. Refuses a
   /// cluster project (not available yet), a project without mission or budget, and a
-  /// second running design (Conflict); a "running" design whose process is gone is first
+  /// second running design (Conflict); a "running" design whose owner is gone is first
   /// marked interrupted.
   Design start(const DesignRequest& request);
-  /// Marks an interrupted (or failed) design running again under a new process.
-  Design resume(std::int64_t design_id, int pid);
-  /// The process that now runs a running design (a detached design goes on in a child).
-  void set_pid(std::int64_t design_id, int pid);
+  /// Marks an interrupted (or failed) design running again under a new owner.
+  Design resume(std::int64_t design_id, const std::string& owner);
+  /// Hands a running design to another owner (a detached design goes on in a child).
+  void set_owner(std::int64_t design_id, const std::string& owner);
+  /// Renews the owner's lease; false when the design is no longer this owner's to run.
+  bool heartbeat(std::int64_t design_id, const std::string& owner);
+  /// The owner stops a running design that it can resume later: it becomes interrupted.
+  void release(std::int64_t design_id, const std::string& owner);
   void finish(std::int64_t design_id, const std::string& best_config, double best_score);
   void mark_failed(std::int64_t design_id);
   /// Gives up an interrupted design (it becomes failed; its folder stays), so that a new one
   /// can start: for a design that cannot be resumed any more.
   void abandon(std::int64_t design_id);
 
-  /// The current or last design, for `status`; running designs whose process is gone are
+  /// The current or last design, for `status`; running designs whose owner is gone are
   /// reported as interrupted.
   std::optional<Design> latest();
   std::vector<Design> list();

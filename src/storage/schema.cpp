@@ -94,6 +94,14 @@ CREATE UNIQUE INDEX one_running_design_per_project ON designs(project_id) WHERE 
     R"sql(
 ALTER TABLE designs ADD COLUMN process TEXT;  -- '<boot id>/<start time>'; NULL in older rows
 )sql",
+    // 3: a design is owned by a job through a lease (storage/lease.hpp), not by a local pid, so
+    // that a server thread or a cluster job on another node can own one.
+    R"sql(
+ALTER TABLE designs ADD COLUMN owner TEXT;            -- '<boot id>/<start time>/<pid>/<job>'
+ALTER TABLE designs ADD COLUMN heartbeat_at INTEGER;  -- Unix seconds of the owner's last renewal
+UPDATE designs SET owner = process || '/' || coalesce(pid, 0) || '/cli', heartbeat_at = updated_at
+  WHERE process IS NOT NULL;
+)sql",
 };
 
 }  // namespace

@@ -6,9 +6,9 @@
 #include <cerrno>
 #include <system_error>
 
+#include "core/home.hpp"
 #include "storage/clock.hpp"
 #include "storage/errors.hpp"
-#include "storage/home.hpp"
 #include "storage/schema.hpp"
 #include "storage/session_file.hpp"
 #include "storage/sessions.hpp"
@@ -38,11 +38,11 @@ void create_private_file(const std::filesystem::path& path) {
 const char* const kSignInHint = "sign in with: swarmdesign sign-in USER";
 }  // namespace
 
-Workspace::Workspace() : Workspace(swarmdesign_home()) {}
+Workspace::Workspace() : Workspace(sd::swarmdesign_home()) {}
 
 Workspace::Workspace(std::filesystem::path home) : home_(std::move(home)) {
   create_private_directory(home_);
-  const auto path = database_path(home_);
+  const auto path = home_ / "swarmdesign.db";
   create_private_file(path);
   database_ = std::make_unique<Database>(path);
   migrate(*database_);

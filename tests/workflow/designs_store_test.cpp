@@ -1,11 +1,13 @@
-// The designs table as run-design and status will use it (through storage, not the binary:
-// those commands are wired when the optimiser and evaluator are merged).
+// The designs table as the application's design jobs use it (through storage, not the binary):
+// starting, resuming, the lease of the job that runs a design, and how a dead owner is found.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include "storage/accounts.hpp"
 #include "storage/designs.hpp"
 #include "storage/errors.hpp"
+#include "storage/clock.hpp"
+#include "storage/lease.hpp"
 #include "storage/projects.hpp"
 #include "storage/workspace.hpp"
 #include "workflow/workflow_fixture.hpp"
@@ -14,6 +16,9 @@ namespace sd::test {
 namespace {
 
 constexpr int kDeadPid = 0x7ffffff0;  // above any pid_max: no such process
+
+std::string owner_of(std::int64_t pid) { return storage::local_owner(pid, "test").text(); }
+std::string me() { return owner_of(::getpid()); }
 
 class workflow_designs : public WorkflowTest {
  protected:
@@ -35,7 +40,7 @@ class workflow_designs : public WorkflowTest {
     if (!owner_) owner_ = storage::create_user(workspace().database(), "alice", "correct horse battery");
     return *owner_;
   }
-  static storage::DesignRequest request(int pid) { return {"fsm,bt", "chocolate", 42, pid}; }
+  static storage::DesignRequest request(const std::string& owner) { return {"fsm,bt", "chocolate", 42, owner}; }
 
  private:
   static bool has(storage::Projects& projects, const std::string& name) {
@@ -49,7 +54,7 @@ class workflow_designs : public WorkflowTest {
 
 TEST_F(workflow_designs, StartCopiesTheProjectSettingsAndGivesTheDesignItsOwnFolder) {
   storage::Designs designs(workspace(), project("p"));
-  const auto design = designs.start(request(::getpid()));
+  const auto design = designs.start(request(me()));
   EXPECT_EQ(design.state, storage::DesignState::running);
   EXPECT_EQ(design.mission, "aac");
   EXPECT_EQ(design.budget, 1000);
@@ -64,8 +69,8 @@ TEST_F(workflow_designs, StartCopiesTheProjectSettingsAndGivesTheDesignItsOwnFol
 
 TEST_F(workflow_designs, ASecondRunningDesignInTheSameProjectIsRefused) {
   storage::Designs designs(workspace(), project("p"));
-  designs.start(request(::getpid()));
-  EXPECT_THROW(designs.start(request(::getpid())), storage::Conflict);
+  designs.start(request(me()));
+  EXPECT_THROW(designs.start(request(me())), storage::Conflict);
   EXPECT_EQ(designs.list().size(), 1u);
   // Even a direct insert cannot make two running designs: the schema forbids it.
   EXPECT_THROW(workspace().database().execute(
@@ -74,19 +79,20 @@ TEST_F(workflow_designs, ASecondRunningDesignInTheSameProjectIsRefused) {
                storage::DatabaseError);
   // Another project may run at the same time.
   storage::Designs other(workspace(), project("q"));
-  EXPECT_NO_THROW(other.start(request(::getpid())));
+  EXPECT_NO_THROW(other.start(request(me())));
 }
 
 TEST_F(workflow_designs, AKilledDesignShowsAsInterruptedAndCanBeResumed) {
   storage::Designs designs(workspace(), project("p"));
-  const auto killed = designs.start(request(kDeadPid));
+  const auto killed = designs.start(request(owner_of(kDeadPid)));
   EXPECT_EQ(designs.latest()->state, storage::DesignState::interrupted);
 
-  const auto resumed = designs.resume(killed.id, ::getpid());
+  const auto resumed = designs.resume(killed.id, me());
   EXPECT_EQ(resumed.state, storage::DesignState::running);
   EXPECT_EQ(resumed.pid, ::getpid());
+  EXPECT_EQ(resumed.owner, me());
   EXPECT_EQ(resumed.folder, killed.folder);
-  EXPECT_THROW(designs.resume(killed.id, ::getpid()), storage::Conflict);  // it runs again
+  EXPECT_THROW(designs.resume(killed.id, me()), storage::Conflict);  // it runs again
 
   designs.finish(killed.id, "--fsm-config --nstates 1 --s0 0", 12.5);
   const auto done = designs.latest();
@@ -99,35 +105,70 @@ TEST_F(workflow_designs, AKilledDesignShowsAsInterruptedAndCanBeResumed) {
 
 TEST_F(workflow_designs, ADeadRunningDesignDoesNotBlockANewOne) {
   storage::Designs designs(workspace(), project("p"));
-  const auto killed = designs.start(request(kDeadPid));
-  const auto fresh = designs.start(request(::getpid()));
+  const auto killed = designs.start(request(owner_of(kDeadPid)));
+  const auto fresh = designs.start(request(me()));
   EXPECT_NE(fresh.id, killed.id);
   EXPECT_EQ(designs.list().front().state, storage::DesignState::interrupted);
 }
 
-TEST_F(workflow_designs, APidNowHeldByAnotherProcessDoesNotKeepADesignRunning) {
+TEST_F(workflow_designs, AnOwnerOnThisMachineLivesAsLongAsItsProcess) {
   storage::Designs designs(workspace(), project("p"));
-  const auto design = designs.start(request(::getpid()));
-  EXPECT_EQ(design.process, storage::process_identity(::getpid()));
-  EXPECT_FALSE(design.process.empty());
+  const auto design = designs.start(request(me()));
+  EXPECT_EQ(design.owner, me());
   EXPECT_EQ(designs.latest()->state, storage::DesignState::running);
-  // As after a reboot: the same pid, alive, but another process (another boot, another start).
-  workspace().database().execute("UPDATE designs SET process = 'another-boot/12345' WHERE id = " + std::to_string(design.id));
+  // The same pid, alive, but a process that started at another time: the pid was reused.
+  const auto mine = *storage::Owner::parse(me());
+  storage::Owner reused = mine;
+  reused.start_time = "1";
+  workspace().database().execute("UPDATE designs SET owner = '" + reused.text() + "' WHERE id = " + std::to_string(design.id));
   EXPECT_EQ(designs.latest()->state, storage::DesignState::interrupted);
-  const auto fresh = designs.start(request(::getpid()));
+  const auto fresh = designs.start(request(me()));
   EXPECT_NE(fresh.id, design.id);
   EXPECT_EQ(designs.list().front().state, storage::DesignState::interrupted);
-  // Rows written before the identity was kept are judged by their pid alone, as before.
-  workspace().database().execute("UPDATE designs SET process = NULL WHERE id = " + std::to_string(fresh.id));
+  // Rows written before leases were kept are judged by their pid alone, as before.
+  workspace().database().execute("UPDATE designs SET owner = NULL WHERE id = " + std::to_string(fresh.id));
   EXPECT_EQ(designs.latest()->state, storage::DesignState::running);
 }
 
-TEST(ProcessIdentity, NamesThisBootAndTheProcessStart) {
-  const std::string mine = storage::process_identity(::getpid());
-  EXPECT_EQ(mine, storage::process_identity(::getpid()));  // stable
-  EXPECT_NE(mine.find('/'), std::string::npos);
-  EXPECT_NE(mine, storage::process_identity(1));             // init started before us
-  EXPECT_EQ(storage::process_identity(kDeadPid), "");
+TEST_F(workflow_designs, AnOwnerOnAnotherMachineLivesWhileItsHeartbeatIsFresh) {
+  storage::Designs designs(workspace(), project("p"));
+  const std::string remote = storage::Owner{"another-boot", "777", 4242, "rank-0"}.text();
+  const auto design = designs.start(request(remote));
+  EXPECT_EQ(designs.latest()->state, storage::DesignState::running);  // just started: fresh heartbeat
+  EXPECT_TRUE(designs.heartbeat(design.id, remote));
+  EXPECT_FALSE(designs.heartbeat(design.id, me()));  // not my design to renew
+
+  const auto stale = std::to_string(storage::unix_now() - storage::kLeaseSeconds - 1);
+  workspace().database().execute("UPDATE designs SET heartbeat_at = " + stale);
+  EXPECT_EQ(designs.latest()->state, storage::DesignState::interrupted);
+  EXPECT_NO_THROW(designs.resume(design.id, me()));  // and another job may take it over
+  EXPECT_EQ(designs.latest()->owner, me());
+}
+
+TEST_F(workflow_designs, AnOwnerReleasesADesignItStopsAndHandsOneOver) {
+  storage::Designs designs(workspace(), project("p"));
+  const auto design = designs.start(request(me()));
+  const std::string child = storage::Owner{"", "", 1, "cli"}.text();
+  EXPECT_THROW(designs.release(design.id, child), storage::Conflict);  // not its owner
+  designs.set_owner(design.id, child);
+  EXPECT_EQ(designs.latest()->owner, child);
+  EXPECT_EQ(designs.latest()->pid, 1);
+  designs.release(design.id, child);
+  EXPECT_EQ(designs.latest()->state, storage::DesignState::interrupted);
+}
+
+TEST(DesignLease, OwnersReadBackAndNameThisProcess) {
+  const storage::Owner mine = storage::local_owner(0, "web-3");
+  EXPECT_EQ(mine.pid, ::getpid());
+  EXPECT_FALSE(mine.boot_id.empty());
+  EXPECT_EQ(mine.text(), storage::local_owner(::getpid(), "web-3").text());  // stable
+  const auto back = storage::Owner::parse(mine.text());
+  ASSERT_TRUE(back);
+  EXPECT_EQ(back->text(), mine.text());
+  EXPECT_EQ(back->job, "web-3");
+  EXPECT_NE(storage::local_owner(1, "x").start_time, mine.start_time);  // init started before us
+  EXPECT_FALSE(storage::Owner::parse("no slashes"));
+  EXPECT_FALSE(storage::owner_alive(owner_of(kDeadPid), storage::unix_now(), storage::unix_now(), 0));
 }
 
 TEST_F(workflow_designs, ClusterProjectsAndUnconfiguredProjectsCannotStartADesign) {
@@ -137,18 +178,18 @@ TEST_F(workflow_designs, ClusterProjectsAndUnconfiguredProjectsCannotStartADesig
   projects.set_mission("aac");
   projects.set_budget(10);
   try {
-    storage::Designs(workspace(), projects.get("remote")).start(request(::getpid()));
+    storage::Designs(workspace(), projects.get("remote")).start(request(me()));
     FAIL() << "a cluster project started a design";
   } catch (const storage::Conflict& e) {
     EXPECT_NE(std::string(e.what()).find("not available yet"), std::string::npos);
   }
-  EXPECT_THROW(storage::Designs(workspace(), project("bare", false)).start(request(::getpid())), storage::NotFound);
+  EXPECT_THROW(storage::Designs(workspace(), project("bare", false)).start(request(me())), storage::NotFound);
   EXPECT_EQ(query("SELECT count(*) FROM designs"), "0");
 }
 
 TEST_F(workflow_designs, SeedsKeepAll64Bits) {
   storage::Designs designs(workspace(), project("p"));
-  auto wide = request(::getpid());
+  auto wide = request(me());
   wide.seed = 0xFEDCBA9876543210ULL;
   EXPECT_EQ(designs.start(wide).seed, 0xFEDCBA9876543210ULL);
 }
