@@ -1,26 +1,20 @@
-#include "cli/design_run.hpp"
+#include "app/design_job.hpp"
 
 #include <chrono>
-#include <iostream>
 
-#include <nlohmann/json.hpp>
-
-#include "cli/command_registry.hpp"
-#include "cli/mission_input.hpp"
-#include "cli/progress_display.hpp"
-#include "cli/resumable_runs.hpp"
-#include "cli/simulation_runner.hpp"
+#include "app/errors.hpp"
+#include "app/evaluation_job.hpp"
+#include "app/resume_check.hpp"
+#include "app/simulation_runner.hpp"
 #include "control/config_string.hpp"
-#include "control/describe.hpp"
 #include "design/race_log.hpp"
 #include "evaluation/results_version.hpp"
 #include "missions/catalogue.hpp"
+#include "storage/design_store.hpp"
 
-namespace sd::cli {
+namespace sd::app {
 
 namespace {
-
-using storage::DesignFolderError;
 
 design::IraceOptions engine_options(long long budget, std::uint64_t seed) {
   design::IraceOptions o;
@@ -28,16 +22,6 @@ design::IraceOptions engine_options(long long budget, std::uint64_t seed) {
   o.seed = seed;
   o.n_instances = 1;  // one mission; every position of the instance list has its own seed
   return o;
-}
-
-// Fingerprints need an engine, and an engine needs a runner; this one is never called.
-struct NoRunner final : design::ExperimentRunner {
-  void run(std::span<const design::Experiment>, std::span<double>) override {}
-};
-
-std::string fingerprint(const design::ParameterSpace& space, const design::IraceOptions& options) {
-  NoRunner none;
-  return design::IteratedRace(space, options, none).fingerprint();
 }
 
 /// design-<mission>-seed<S>, or with -2, -3 ... when taken: a design never lands in an old one.
@@ -50,11 +34,6 @@ std::filesystem::path default_design_folder(const std::string& mission_name, std
 
 }  // namespace
 
-std::string mission_reference(const std::string& mission) {
-  const bool is_path = mission.find('/') != std::string::npos || mission.ends_with(".json");
-  return is_path ? std::filesystem::absolute(mission).lexically_normal().string() : mission;
-}
-
 long long minimum_design_budget(const design::ParameterSpace& space, int nb_iterations) {
   const int n = design::default_nb_iterations(space.nb_variable());
   return design::minimum_budget(engine_options(1, 0), n, nb_iterations > 0 ? nb_iterations : n);
@@ -63,20 +42,24 @@ long long minimum_design_budget(const design::ParameterSpace& space, int nb_iter
 void require_minimum_budget(long long budget, const design::ParameterSpace& space, int nb_iterations) {
   const long long minimum = minimum_design_budget(space, nb_iterations);
   if (budget < minimum)
-    throw UsageError("a budget of " + std::to_string(budget) + " simulation runs is below the minimum of " +
-                     std::to_string(minimum) + " that Iterated F-Race needs for this design space" +
-                     (nb_iterations > 0 ? " with " + std::to_string(nb_iterations) + " iterations" : ""));
+    throw InvalidRequest("a budget of " + std::to_string(budget) + " simulation runs is below the minimum of " +
+                         std::to_string(minimum) + " that Iterated F-Race needs for this design space" +
+                         (nb_iterations > 0 ? " with " + std::to_string(nb_iterations) + " iterations" : ""));
+}
+
+design::DesignSpaceChoice resolve_space(const design::DesignSpaceRequest& request) {
+  try {
+    return design::resolve_design_space(request);
+  } catch (const std::invalid_argument& e) {
+    throw InvalidRequest(e.what());
+  }
 }
 
 PreparedDesign check_new_design(const NewDesignSettings& settings) {
   PreparedDesign d;
-  d.mission = load_mission_or_usage(settings.mission);
+  d.mission = load_requested_mission(settings.mission);
   d.mission_reference = mission_reference(settings.mission);
-  try {
-    d.choice = design::resolve_design_space(settings.space);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(e.what());
-  }
+  d.choice = resolve_space(settings.space);
   d.space = std::make_unique<design::ParameterSpace>(design::build_design_space(d.choice));
   require_minimum_budget(settings.budget, *d.space);
   d.options = engine_options(settings.budget, settings.seed);
@@ -110,7 +93,7 @@ PreparedDesign prepare_resume(const std::filesystem::path& folder, bool allow_fi
   }
   d.space = std::make_unique<design::ParameterSpace>(design::build_design_space(d.choice));
   d.options = engine_options(meta.budget, meta.seed);
-  if (fingerprint(*d.space, d.options) != meta.fingerprint)
+  if (design::fingerprint(*d.space, d.options) != meta.fingerprint)
     throw DesignFolderError("the design in " + d.folder.string() +
                             " was made with another design space or other optimiser settings than this swarmdesign has; "
                             "it cannot be resumed by this version");
@@ -120,7 +103,7 @@ PreparedDesign prepare_resume(const std::filesystem::path& folder, bool allow_fi
   return d;
 }
 
-DesignReport run_prepared_design(PreparedDesign& d, const RunOptions& options) {
+DesignOutcome run_design(PreparedDesign& d, const DesignRunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   std::filesystem::create_directories(d.folder);
   const storage::DesignRunLock lock(d.folder);
@@ -128,11 +111,13 @@ DesignReport run_prepared_design(PreparedDesign& d, const RunOptions& options) {
     if (d.resuming) return storage::DesignStore::open(d.folder);
     storage::DesignMeta meta{d.mission_reference, std::string(direction_name(d.mission.objective.direction)),
                              d.options.max_experiments, d.choice.architectures_text(), d.choice.flavours_text(),
-                             d.options.seed, fingerprint(*d.space, d.options), d.mission.digest, kResultsVersion};
+                             d.options.seed, design::fingerprint(*d.space, d.options), d.mission.digest, kResultsVersion};
     return storage::DesignStore::create(d.folder, meta);
   }();
 
-  SimulationRunner runner(d.mission, *d.space, options.threads);
+  std::optional<ThreadedEvaluator> threads;
+  Evaluator& evaluator = options.evaluator ? *options.evaluator : threads.emplace(static_cast<int>(options.threads));
+  SimulationRunner runner(d.mission, *d.space, evaluator);
   design::IteratedRace race(*d.space, d.options, runner);
   design::EliminationTracker eliminations;
   if (d.restored) {
@@ -140,21 +125,26 @@ DesignReport run_prepared_design(PreparedDesign& d, const RunOptions& options) {
     d.restored.reset();
     eliminations.reset(race.state());
   }
-  const bool maximise = d.mission.objective.direction == Direction::Maximize;
-  ProgressDisplay display(options.progress         ? ProgressDisplay::Mode::Terminal
-                          : options.log_iterations ? ProgressDisplay::Mode::Log
-                                                   : ProgressDisplay::Mode::Off,
-                          maximise);
   race.on_progress([&](const design::Progress& p) {
     eliminations.observe(race.state());
-    display.update(p);
+    if (options.observer) options.observer->progress(p);
   });
   race.on_checkpoint([&](const design::Checkpoint& c) {
     const auto dropped = eliminations.take();
     store.save(c, dropped, *d.space);
+    if (options.observer) options.observer->checkpoint(store.step());
   });
-  const design::DesignResult result = race.run();
-  display.clear();
+
+  DesignOutcome outcome;
+  while (race.advance()) {
+    if (options.cancel && options.cancel->cancelled()) {
+      outcome.cancelled = true;
+      outcome.experiments_used = race.result().experiments_used;
+      return outcome;
+    }
+  }
+  const design::DesignResult result = race.result();
+  outcome.experiments_used = result.experiments_used;
 
   DesignReport r;
   r.folder = d.folder;
@@ -173,44 +163,11 @@ DesignReport run_prepared_design(PreparedDesign& d, const RunOptions& options) {
     r.elites.push_back({e.id, d.space->render(e.configuration), runner.score_of(e.mean_cost), e.evaluations});
   if (r.elites.empty()) throw std::runtime_error("the design ended without a best configuration");
   r.best = parse_control_software(r.elites.front().configuration);
-  r.threads = runner.threads();
+  r.threads = runner.workers();
   r.evaluation_seconds = runner.evaluation_seconds();
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return r;
+  outcome.report = std::move(r);
+  return outcome;
 }
 
-void print_design_report(const DesignReport& r, bool as_json) {
-  const EliteReport& best = r.elites.front();
-  if (as_json) {
-    nlohmann::json elites = nlohmann::json::array();
-    for (const auto& e : r.elites)
-      elites.push_back({{"id", e.id}, {"configuration", e.configuration}, {"mean_score", e.mean_score},
-                        {"evaluations", e.evaluations}});
-    const double overhead = r.wall_seconds > 0 ? (r.wall_seconds - r.evaluation_seconds) / r.wall_seconds : 0.0;
-    nlohmann::json out{{"folder", r.folder.string()},
-                       {"mission", r.mission},
-                       {"direction", r.direction},
-                       {"budget", r.budget},
-                       {"seed", r.seed},
-                       {"architectures", r.architectures},
-                       {"flavours", r.flavours},
-                       {"resumed", r.resumed},
-                       {"experiments_used", r.experiments_used},
-                       {"iterations", r.iterations},
-                       {"finish_reason", r.finish_reason},
-                       {"best", elites.front()},
-                       {"elites", elites},
-                       {"timing", {{"wall_s", r.wall_seconds}, {"evaluation_s", r.evaluation_seconds},
-                                   {"optimiser_overhead", overhead}, {"threads", r.threads}}}};
-    std::cout << out.dump(2) << "\n";
-    return;
-  }
-  std::cout << "Design finished (" << r.finish_reason << "): " << r.experiments_used << " of " << r.budget
-            << " simulation runs, " << r.iterations << " iterations, seed " << r.seed << ".\n"
-            << "Best control software (configuration " << best.id << "): mean score " << format_number(best.mean_score)
-            << " on " << r.mission << " (" << r.direction << ") over " << best.evaluations << " runs\n"
-            << describe(r.best) << "Configuration string:\n  " << best.configuration << "\n"
-            << "Design folder: " << r.folder.string() << "\n";
-}
-
-}  // namespace sd::cli
+}  // namespace sd::app

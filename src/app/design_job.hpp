@@ -1,13 +1,16 @@
 #pragma once
-// One design process, as `design` and `run-design` run it: mission + design space + budget
-// + seed, evaluated by SimulationRunner, checkpointed into DIR/design.db after every race
-// step, resumable after kill -9 with exactly the result of an uninterrupted run.
+// One design process as a job: mission + design space + budget + seed, raced by Iterated
+// F-Race on an Evaluator, checkpointed into DIR/design.db after every race step, watched by an
+// observer, cancelled between two steps, resumed after a cancel or a kill -9 to exactly the
+// result of an uninterrupted run. The CLI's `design` and `run-design`, a web server and an MPI
+// rank all run designs through here.
 //
 //   PreparedDesign d = prepare_new_design(settings, folder);   // or prepare_resume(folder)
-//   DesignReport r = run_prepared_design(d, {threads, progress});
+//   DesignOutcome o = run_design(d, {.threads = 2, .observer = &observer, .cancel = &token});
 //
 // prepare_* check everything (mission, flags, minimum budget, the folder) without side
 // effects, so a caller can refuse bad input before it records or forks anything.
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -18,10 +21,10 @@
 #include "control/control_software.hpp"
 #include "design/design_space.hpp"
 #include "design/iterated_race.hpp"
+#include "evaluation/evaluator.hpp"
 #include "missions/mission.hpp"
-#include "storage/design_store.hpp"
 
-namespace sd::cli {
+namespace sd::app {
 
 struct NewDesignSettings {
   std::string mission;  // name or mission file
@@ -41,21 +44,16 @@ struct PreparedDesign {
   bool resuming = false;
 };
 
-/// Checks the settings of a new design (no folder yet): UsageError for an unknown mission, an
-/// unavailable flavour or a budget below the engine's minimum.
+/// Checks the settings of a new design (no folder yet): InvalidRequest for an unknown
+/// mission, an unavailable flavour or a budget below the engine's minimum.
 PreparedDesign check_new_design(const NewDesignSettings& settings);
-/// check_new_design in a folder; storage::DesignFolderError when it already holds a design.
+/// check_new_design in a folder; DesignFolderError when it already holds a design.
 /// An empty folder means ./design-<mission>-seed<S> (with -2, -3 ... when taken).
 PreparedDesign prepare_new_design(const NewDesignSettings& settings, const std::filesystem::path& folder);
-/// Throws storage::DesignFolderError for a folder that is not a design, of another format or
-/// space, damaged, or (unless allow_finished) finished.
+/// DesignFolderError for a folder that is not a design, of another format or space, damaged,
+/// whose mission changed or whose runs this build would score differently, or (unless
+/// allow_finished) finished.
 PreparedDesign prepare_resume(const std::filesystem::path& folder, bool allow_finished = false);
-
-struct RunOptions {
-  unsigned threads = 0;          // 0: all cores
-  bool progress = false;         // a live line on stderr (a terminal)
-  bool log_iterations = false;   // one line per finished iteration on stderr (a log file)
-};
 
 struct EliteReport {
   int id = 0;
@@ -81,20 +79,49 @@ struct DesignReport {
   int threads = 0;
 };
 
-DesignReport run_prepared_design(PreparedDesign& design, const RunOptions& options);
+/// What a running design tells whoever watches it. Called on the job's thread.
+class DesignObserver {
+ public:
+  virtual ~DesignObserver() = default;
+  /// After every race step (scores are costs: negate for a maximised mission, or use
+  /// `best_score` of the progress document).
+  virtual void progress(const design::Progress&) {}
+  /// After checkpoint `step` is durably in design.db: a kill from now on resumes from here.
+  virtual void checkpoint(std::int64_t /*step*/) {}
+};
 
-/// A mission as a design stores it: a catalogue name as given, a mission file by absolute path
-/// (so that the design resumes, and target-runner runs, from any directory).
-std::string mission_reference(const std::string& mission);
+/// Set from any thread; the design stops after the race step it is in, its state saved.
+class CancelToken {
+ public:
+  void cancel() { cancelled_.store(true); }
+  bool cancelled() const { return cancelled_.load(); }
+
+ private:
+  std::atomic<bool> cancelled_{false};
+};
+
+struct DesignRunOptions {
+  unsigned threads = 0;               // local threads when no evaluator is given (0: all cores)
+  Evaluator* evaluator = nullptr;     // another backend (MPI ranks, ...); else threads
+  DesignObserver* observer = nullptr;
+  const CancelToken* cancel = nullptr;
+};
+
+struct DesignOutcome {
+  bool cancelled = false;             // stopped by the token: resumable with prepare_resume
+  std::optional<DesignReport> report; // set when the design finished
+  long long experiments_used = 0;
+};
+
+DesignOutcome run_design(PreparedDesign& design, const DesignRunOptions& options);
 
 /// The smallest budget the engine accepts for this space (irace's minimum). nb_iterations 0
 /// means the default floor(2 + log2 N_param), as both the engine and irace pick it.
 long long minimum_design_budget(const design::ParameterSpace& space, int nb_iterations = 0);
-/// UsageError naming the minimum when `budget` is below it: `design`, `run-design` and
+/// InvalidRequest naming the minimum when `budget` is below it: `design`, `run-design` and
 /// `irace-export` refuse a too small budget with the same words.
 void require_minimum_budget(long long budget, const design::ParameterSpace& space, int nb_iterations = 0);
+/// The design space of the flags; InvalidRequest for a flavour without modules.
+design::DesignSpaceChoice resolve_space(const design::DesignSpaceRequest& request);
 
-/// Text for people, or one JSON document.
-void print_design_report(const DesignReport& report, bool json);
-
-}  // namespace sd::cli
+}  // namespace sd::app

@@ -1,8 +1,8 @@
-#include "cli/resumable_runs.hpp"
+#include "app/resume_check.hpp"
 
 #include "evaluation/results_version.hpp"
 
-namespace sd::cli {
+namespace sd::app {
 
 std::string results_version_refusal(const std::string& what, int stored_results_version) {
   if (stored_results_version == kResultsVersion) return "";
@@ -28,4 +28,4 @@ ResumeCheck check_resumable(const std::string& what, const std::string& mission_
   return check;
 }
 
-}  // namespace sd::cli
+}  // namespace sd::app

@@ -6,7 +6,7 @@
 
 #include "missions/catalogue.hpp"
 
-namespace sd::cli {
+namespace sd::app {
 
 struct ResumeCheck {
   Mission mission;      // loaded from the stored reference (when it could be)
@@ -22,4 +22,4 @@ std::string results_version_refusal(const std::string& what, int stored_results_
 ResumeCheck check_resumable(const std::string& what, const std::string& mission_reference,
                             const std::string& stored_digest, int stored_results_version);
 
-}  // namespace sd::cli
+}  // namespace sd::app

@@ -1,20 +1,16 @@
-#include "cli/simulation_runner.hpp"
+#include "app/simulation_runner.hpp"
 
-#include <algorithm>
-#include <thread>
 #include <unordered_set>
 
 #include "control/config_string.hpp"
-#include "evaluation/evaluator.hpp"
 
-namespace sd::cli {
+namespace sd::app {
 
-SimulationRunner::SimulationRunner(const Mission& mission, const design::ParameterSpace& space, unsigned threads)
+SimulationRunner::SimulationRunner(const Mission& mission, const design::ParameterSpace& space, Evaluator& evaluator)
     : mission_(mission),
       space_(space),
-      maximise_(mission.objective.direction == Direction::Maximize),
-      threads_(threads > 0 ? static_cast<int>(threads) : std::max(1, static_cast<int>(std::thread::hardware_concurrency()))),
-      workers_(static_cast<std::size_t>(threads_)) {}
+      evaluator_(evaluator),
+      maximise_(mission.objective.direction == Direction::Maximize) {}
 
 void SimulationRunner::run(std::span<const design::Experiment> experiments, std::span<double> costs) {
   const auto start = std::chrono::steady_clock::now();
@@ -27,16 +23,13 @@ void SimulationRunner::run(std::span<const design::Experiment> experiments, std:
       software_.emplace(e.configuration_id, parse_control_software(space_.render(*e.configuration)));
   }
   std::erase_if(software_, [&](const auto& entry) { return !batch.count(entry.first); });
-  for (Cache& cache : workers_) std::erase_if(cache, [&](const auto& entry) { return !batch.count(entry.first); });
 
-  parallel_for(experiments.size(), threads_, [&](std::size_t i, int worker) {
-    const design::Experiment& e = experiments[i];
-    auto& simulation = workers_[static_cast<std::size_t>(worker)][e.configuration_id];
-    if (!simulation) simulation = std::make_unique<Simulation>(mission_, software_.at(e.configuration_id));
-    const double score = simulation->run(e.seed);
-    costs[i] = maximise_ ? -score : score;
-  });
+  tasks_.clear();
+  for (const auto& e : experiments) tasks_.push_back({&software_.at(e.configuration_id), e.seed, e.configuration_id});
+  scores_.resize(experiments.size());
+  evaluator_.evaluate(mission_, tasks_, scores_);
+  for (std::size_t i = 0; i < experiments.size(); ++i) costs[i] = maximise_ ? -scores_[i] : scores_[i];
   evaluation_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-}  // namespace sd::cli
+}  // namespace sd::app

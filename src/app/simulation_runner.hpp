@@ -1,10 +1,9 @@
 #pragma once
-// How a design's experiments are evaluated: every experiment of a race step simulated on
-// T threads, each worker with its own Simulation per configuration, reused across seeds.
-// Costs are written by index, and a simulation is a pure function of (mission, control
-// software, seed), so the costs never depend on the thread count.
+// The bridge from the optimiser to the simulator: a race step's experiments (configuration,
+// seed) become evaluation tasks (control software, seed, key = configuration id) for whichever
+// Evaluator the job runs on — threads here, MPI ranks or a server's pool elsewhere. Costs are
+// the mission's scores, negated when the mission is maximised (irace minimises).
 #include <chrono>
-#include <memory>
 #include <span>
 #include <unordered_map>
 #include <vector>
@@ -12,35 +11,35 @@
 #include "control/control_software.hpp"
 #include "design/experiment_runner.hpp"
 #include "design/parameter_space.hpp"
-#include "evaluation/simulation.hpp"
+#include "evaluation/evaluator.hpp"
 #include "missions/mission.hpp"
 
-namespace sd::cli {
+namespace sd::app {
 
 class SimulationRunner final : public design::ExperimentRunner {
  public:
-  /// `threads` 0: one per core. The mission and space must outlive the runner.
-  SimulationRunner(const Mission& mission, const design::ParameterSpace& space, unsigned threads);
+  /// The mission, space and evaluator must outlive the runner.
+  SimulationRunner(const Mission& mission, const design::ParameterSpace& space, Evaluator& evaluator);
 
-  /// cost = -score for a maximised objective, score for a minimised one.
   void run(std::span<const design::Experiment> experiments, std::span<double> costs) override;
 
-  /// Mission score of a cost, and back.
+  /// Mission score of a cost.
   double score_of(double cost) const { return maximise_ ? -cost : cost; }
   /// Wall time spent inside run(), for the optimiser's overhead.
   double evaluation_seconds() const { return evaluation_seconds_; }
-  int threads() const { return threads_; }
+  int workers() const { return evaluator_.workers(); }
 
  private:
-  using Cache = std::unordered_map<int, std::unique_ptr<Simulation>>;  // configuration id -> simulation
-
   const Mission& mission_;
   const design::ParameterSpace& space_;
+  Evaluator& evaluator_;
   bool maximise_;
-  int threads_;
-  std::unordered_map<int, ControlSoftware> software_;  // of the configurations in the last batch
-  std::vector<Cache> workers_;
+  // The control software of the configurations in the last batch: parsed once, kept at the
+  // same address while the configuration races (the evaluator caches simulations by key).
+  std::unordered_map<int, ControlSoftware> software_;
+  std::vector<EvaluationTask> tasks_;
+  std::vector<double> scores_;
   double evaluation_seconds_ = 0.0;
 };
 
-}  // namespace sd::cli
+}  // namespace sd::app

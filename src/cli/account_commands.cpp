@@ -6,18 +6,13 @@
 
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <string>
 
+#include "app/accounts.hpp"
+#include "app/documents.hpp"
 #include "cli/command_registry.hpp"
-#include "storage/accounts.hpp"
 #include "storage/clock.hpp"
-#include "storage/errors.hpp"
 #include "storage/passwords.hpp"
-#include "storage/session_file.hpp"
-#include "storage/sessions.hpp"
-#include "storage/validation.hpp"
-#include "storage/workspace.hpp"
 
 namespace sd::cli {
 namespace {
@@ -106,10 +101,6 @@ struct Password {
   ~Password() { storage::wipe(text); }
 };
 
-void require_valid_user_name(const std::string& name) {
-  if (auto problem = storage::user_name_problem(name); !problem.empty()) throw UsageError(problem);
-}
-
 // ---- The commands -------------------------------------------------------------------------
 
 struct AccountOptions {
@@ -119,83 +110,44 @@ struct AccountOptions {
 };
 
 void sign_up(const AccountOptions& options) {
-  require_valid_user_name(options.user);
-  storage::Workspace workspace;
-  // Say so before asking for a password that would be thrown away.
-  if (storage::user_exists(workspace.database(), options.user))
-    throw storage::Conflict("user name '" + options.user + "' is already taken; choose another");
+  app::Home home;
+  app::check_new_user_name(home, options.user);  // before asking for a password that would be thrown away
   Password password{read_password(options.password_stdin, "Password for new user " + options.user + ": ", true)};
-  if (auto problem = storage::password_problem(password.text, options.user); !problem.empty()) throw UsageError(problem);
-  const auto user = storage::create_user(workspace.database(), options.user, password.text);
+  const auto user = app::sign_up(home, options.user, password.text);
   std::cout << "Created user " << user.name << ". Sign in with: swarmdesign sign-in " << user.name << '\n';
 }
 
 void sign_in(const AccountOptions& options) {
-  require_valid_user_name(options.user);
-  storage::Workspace workspace;
+  app::Home home;
   Password password{read_password(options.password_stdin, "Password for " + options.user + ": ", false)};
-  const auto user = storage::authenticate(workspace.database(), options.user, password.text);
-
-  // The session this replaces, if any, is ended once the new one is in place.
-  std::optional<std::string> previous;
-  try {
-    previous = storage::read_session_file(workspace.session_file());
-  } catch (const storage::AccessDenied&) {
-    // An unreadable or unsafe old file is simply replaced.
-  }
-  const auto session = storage::start_session(workspace.database(), user);
-  try {
-    storage::write_session_file(workspace.session_file(), session.token);
-  } catch (...) {
-    storage::end_session(workspace.database(), session.token);
-    throw;
-  }
-  if (previous) storage::end_session(workspace.database(), *previous);
-  std::cout << "Signed in as " << user.name << " until " << storage::format_time(session.expires_at) << ".\n";
+  const auto signed_in = app::sign_in_here(home, options.user, password.text);
+  std::cout << "Signed in as " << signed_in.user.name << " until " << storage::format_time(signed_in.expires_at)
+            << ".\n";
 }
 
 void sign_out() {
-  storage::Workspace workspace;
-  std::optional<std::string> token;
-  try {
-    token = storage::read_session_file(workspace.session_file());
-  } catch (const storage::AccessDenied&) {
-    // Signing out must work even with a damaged or unsafe session file: just remove it.
-    storage::remove_session_file(workspace.session_file());
-    std::cout << "Removed the session file; you are signed out.\n";
-    return;
-  }
-  if (!token) {
-    std::cout << "Not signed in; nothing to do.\n";
-    return;
-  }
-  const auto session = storage::find_session(workspace.database(), *token);
-  storage::end_session(workspace.database(), *token);
-  storage::remove_session_file(workspace.session_file());
-  std::cout << "Signed out" << (session ? " " + session->user.name : std::string()) << ".\n";
+  app::Home home;
+  const app::SignedOut out = app::sign_out_here(home);
+  if (out.removed_damaged_file) std::cout << "Removed the session file; you are signed out.\n";
+  else if (!out.was_signed_in) std::cout << "Not signed in; nothing to do.\n";
+  else std::cout << "Signed out" << (out.user ? " " + *out.user : std::string()) << ".\n";
 }
 
 void show_users(const AccountOptions& options) {
-  storage::Workspace workspace;
-  const auto me = workspace.signed_in_user();
-  const auto users = storage::list_users(workspace.database());
+  app::Home home;
+  const app::UserList list = app::list_users(home);
   if (options.json) {
-    auto list = nlohmann::json::array();
-    for (const auto& user : users)
-      list.push_back({{"name", user.name},
-                      {"created", storage::format_time(user.created_at)},
-                      {"signed_in", me && me->id == user.id}});
-    std::cout << nlohmann::json{{"users", list}}.dump(2) << '\n';
+    std::cout << app::users_document(list).dump(2) << '\n';
     return;
   }
-  if (users.empty()) {
+  if (list.users.empty()) {
     std::cout << "No users yet. Create one with: swarmdesign sign-up USER\n";
     return;
   }
-  for (const auto& user : users)
-    std::cout << (me && me->id == user.id ? "* " : "  ") << user.name << "  (since "
+  for (const auto& user : list.users)
+    std::cout << (list.me && *list.me == user.id ? "* " : "  ") << user.name << "  (since "
               << storage::format_time(user.created_at) << ")\n";
-  if (me) std::cout << "(* signed in)\n";
+  if (list.me) std::cout << "(* signed in)\n";
 }
 
 const std::string kPasswordHelp =

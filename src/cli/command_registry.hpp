@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "app/errors.hpp"
+
 namespace CLI {
 class App;
 }
@@ -19,10 +21,9 @@ struct Context {
   bool has_control_software() const { return !control_software.empty(); }
 };
 
-/// Misuse of the command line: exit status 2.
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+/// Misuse of the command line: the application's InvalidRequest, exit status 2 like every
+/// malformed request (app/errors.hpp has the rule).
+using UsageError = app::InvalidRequest;
 
 using Registration = std::function<void(CLI::App& app, Context& context)>;
 

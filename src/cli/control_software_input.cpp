@@ -30,20 +30,4 @@ ControlSoftware read_control_software(const Context& context, const ControlSoftw
   return parse_control_software(std::span<const std::string>(context.control_software), parse);
 }
 
-std::vector<std::uint64_t> parse_seed_range(const std::string& text) {
-  auto number = [&](const std::string& s) -> std::uint64_t {
-    if (s.empty() || s.find_first_not_of("0123456789") != std::string::npos)
-      throw UsageError("--seeds '" + text + "': expected A-B with non-negative integers");
-    return std::stoull(s);
-  };
-  const auto dash = text.find('-');
-  if (dash == std::string::npos) return {number(text)};
-  const std::uint64_t a = number(text.substr(0, dash)), b = number(text.substr(dash + 1));
-  if (b < a) throw UsageError("--seeds '" + text + "': the range is empty");
-  if (b - a >= 1'000'000) throw UsageError("--seeds '" + text + "': at most 1,000,000 seeds");
-  std::vector<std::uint64_t> seeds;
-  for (std::uint64_t s = a; s <= b; ++s) seeds.push_back(s);
-  return seeds;
-}
-
 }  // namespace sd::cli

@@ -16,7 +16,4 @@ struct ControlSoftwareOptions {
 void add_control_software_options(CLI::App& command, ControlSoftwareOptions& options);
 ControlSoftware read_control_software(const Context& context, const ControlSoftwareOptions& options);
 
-/// "A-B" or "S" -> the list of seeds.
-std::vector<std::uint64_t> parse_seed_range(const std::string& text);
-
 }  // namespace sd::cli

@@ -1,39 +1,24 @@
 // Core commands, no account needed: missions, mission show, evaluate, show-config.
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
-#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <memory>
-#include <numeric>
-#include <unistd.h>
 
+#include "app/documents.hpp"
+#include "app/evaluation_job.hpp"
+#include "app/inputs.hpp"
 #include "cli/command_registry.hpp"
 #include "cli/control_software_input.hpp"
-#include "cli/mission_input.hpp"
-#include "cli/score_report.hpp"
+#include "cli/score_output.hpp"
 #include "control/describe.hpp"
-#include "evaluation/evaluator.hpp"
-#include "evaluation/simulation.hpp"
-#include "evaluation/trace_writer.hpp"
 #include "missions/catalogue.hpp"
 #include "missions/svg.hpp"
 
 namespace sd::cli {
 
-Mission load_mission_or_usage(const std::string& name) {
-  try {
-    return load_mission(name);
-  } catch (const MissionError& e) {
-    throw UsageError(e.what());
-  }
-}
-
 namespace {
-
-using nlohmann::json;
 
 void register_missions(CLI::App& app) {
   auto* cmd = app.add_subcommand("missions", "List the missions (name, origin, robots, duration, objective direction)");
@@ -43,11 +28,7 @@ void register_missions(CLI::App& app) {
   cmd->callback([json_output] {
     const auto missions = list_missions();
     if (*json_output) {
-      json out = json::array();
-      for (const auto& m : missions)
-        out.push_back({{"name", m.name}, {"title", m.title}, {"origin", m.origin}, {"robots", m.robots},
-                       {"duration_s", m.duration_s}, {"direction", m.direction}, {"source", m.source}});
-      std::cout << out.dump(2) << "\n";
+      std::cout << app::missions_document(missions).dump(2) << "\n";
       return;
     }
     std::printf("%-28s %-12s %6s %9s  %-9s %s\n", "NAME", "ORIGIN", "ROBOTS", "DURATION", "OBJECTIVE", "TITLE");
@@ -71,20 +52,14 @@ void register_mission_show(CLI::App& app) {
   show->add_flag("--json", o->json, "Print one JSON document");
   show->footer("Example: swarmdesign mission show aac --svg aac.svg");
   show->callback([o] {
-    const Mission m = load_mission_or_usage(o->name);
+    const Mission m = app::load_requested_mission(o->name);
     if (!o->svg.empty()) {
       std::ofstream out(o->svg);
       if (!out) throw std::runtime_error("cannot write " + o->svg);
       out << mission_svg(m);
     }
     if (o->json) {
-      std::cout << json{{"name", m.name}, {"title", m.title}, {"origin", m.origin}, {"description", m.description},
-                        {"robots", m.robots}, {"duration_s", m.duration_s}, {"ticks", m.ticks},
-                        {"walls", m.arena.walls.size()}, {"floor_patches", m.arena.floor_patches.size()},
-                        {"lights", m.arena.lights.size()}, {"objective", m.objective.type},
-                        {"direction", direction_name(m.objective.direction)}, {"source", m.source}}
-                       .dump(2)
-                << "\n";
+      std::cout << app::mission_document(m).dump(2) << "\n";
       return;
     }
     std::cout << m.title << " (" << m.name << ", " << m.origin << ")\n";
@@ -119,27 +94,15 @@ void register_evaluate(CLI::App& app, Context& context) {
       "The control software ends the command line.\n"
       "Example: swarmdesign evaluate --mission aac --seeds 1-20 --fsm-config --nstates 1 --s0 10 --rwm0 50");
   cmd->callback([o, &context] {
-    const Mission mission = load_mission_or_usage(o->mission);
-    ControlSoftware software;
-    try {
-      software = read_control_software(context, o->software);
-    } catch (const ConfigError& e) {
-      throw UsageError(e.what());
-    }
-    const std::vector<std::uint64_t> seeds = o->seeds.empty() ? std::vector<std::uint64_t>{o->seed} : parse_seed_range(o->seeds);
+    const Mission mission = app::load_requested_mission(o->mission);
+    const ControlSoftware software = read_control_software(context, o->software);
+    const std::vector<std::uint64_t> seeds =
+        o->seeds.empty() ? std::vector<std::uint64_t>{o->seed} : app::parse_seed_range(o->seeds);
     if (!o->trace.empty() && seeds.size() != 1) throw UsageError("--trace records one run: use it with --seed");
-
-    std::vector<double> scores(seeds.size());
-    if (!o->trace.empty()) {
-      std::ofstream out(o->trace);
-      if (!out) throw std::runtime_error("cannot write " + o->trace);
-      TraceWriter writer(out);
-      Simulation simulation(mission, software);
-      scores[0] = simulation.run(seeds[0], &writer);
-    } else {
-      scores = score_seeds(mission, software, seeds, o->threads, isatty(STDERR_FILENO) && !o->json);
-    }
-    print_scores(mission, software, seeds, scores, o->json);
+    if (!o->trace.empty())
+      print_scores(mission, software, seeds, {app::traced_run(mission, software, seeds[0], o->trace)}, o->json);
+    else
+      score_and_print(mission, software, seeds, o->threads, o->json);
   });
 }
 
@@ -155,12 +118,7 @@ void register_show_config(CLI::App& app, Context& context) {
   add_control_software_options(*cmd, o->software);
   cmd->footer("Example: swarmdesign show-config --dot --fsm-config --nstates 1 --s0 10 --rwm0 50 | dot -Tpng > fsm.png");
   cmd->callback([o, &context] {
-    ControlSoftware software;
-    try {
-      software = read_control_software(context, o->software);
-    } catch (const ConfigError& e) {
-      throw UsageError(e.what());
-    }
+    const ControlSoftware software = read_control_software(context, o->software);
     if (o->dot) std::cout << to_dot(software);
     else if (o->canonical) std::cout << to_config_string(software) << "\n";
     else std::cout << describe(software) << "  " << to_config_string(software) << "\n";

@@ -1,18 +1,18 @@
 // Designing without an account: `design` (run or resume a design process in a folder) and
 // `irace-export` (let the real irace 3.5 drive SwarmDesign's evaluator).
 #include <CLI/CLI.hpp>
-#include <unistd.h>
 
 #include <filesystem>
 #include <iostream>
 #include <memory>
 
+#include "app/design_job.hpp"
+#include "app/documents.hpp"
+#include "app/inputs.hpp"
+#include "app/irace_export_job.hpp"
 #include "cli/command_registry.hpp"
-#include "cli/mission_input.hpp"
+#include "cli/design_display.hpp"
 #include "cli/design_flags.hpp"
-#include "cli/design_run.hpp"
-#include "design/irace_export.hpp"
-#include "missions/catalogue.hpp"
 
 namespace sd::cli {
 namespace {
@@ -25,17 +25,17 @@ struct DesignOptions {
 };
 
 void run_design_command(const DesignOptions& o) {
-  PreparedDesign prepared;
+  app::PreparedDesign prepared;
   if (!o.resume.empty()) {
     if (!o.mission.empty() || !o.budget.empty() || !o.seed.empty() || !o.out.empty() || o.flags.any())
       throw UsageError("--resume continues a design with the settings it was started with; give only --threads or --json with it");
-    prepared = prepare_resume(o.resume);
+    prepared = app::prepare_resume(o.resume);
   } else {
     if (o.mission.empty()) throw UsageError("--mission is required (or --resume DIR)");
     if (o.budget.empty()) throw UsageError("--budget is required (or --resume DIR)");
-    NewDesignSettings settings{o.mission, parse_budget(o.budget), o.flags.request(),
-                               o.seed.empty() ? random_seed() : parse_seed(o.seed)};
-    prepared = prepare_new_design(settings, o.out);
+    app::NewDesignSettings settings{o.mission, app::parse_budget(o.budget), o.flags.request(),
+                                    o.seed.empty() ? app::random_seed() : app::parse_seed(o.seed)};
+    prepared = app::prepare_new_design(settings, o.out);
   }
   for (const auto& note : prepared.choice.notes) std::cerr << "swarmdesign: note: " << note << "\n";
   if (!o.json)
@@ -43,8 +43,11 @@ void run_design_command(const DesignOptions& o) {
               << " (mission " << prepared.mission.name << ", budget " << prepared.options.max_experiments
               << ", seed " << prepared.options.seed << ")\n"
               << std::flush;
-  const DesignReport report = run_prepared_design(prepared, {o.threads, isatty(STDERR_FILENO) != 0 && !o.json, false});
-  print_design_report(report, o.json);
+  DesignDisplay display(ProgressLine::terminal_if(!o.json), prepared.mission.objective.direction == Direction::Maximize);
+  const app::DesignOutcome outcome = app::run_design(prepared, {.threads = o.threads, .observer = &display});
+  display.finish();
+  if (o.json) std::cout << app::design_report_document(*outcome.report).dump(2) << "\n";
+  else print_design_report(*outcome.report);
 }
 
 void register_design(CLI::App& app) {
@@ -76,29 +79,15 @@ struct ExportOptions {
 };
 
 void run_irace_export(const ExportOptions& o) {
-  const Mission mission = load_mission_or_usage(o.mission);
-  design::DesignSpaceChoice choice;
-  try {
-    choice = design::resolve_design_space(o.flags.request());
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(e.what());
-  }
-  for (const auto& note : choice.notes) std::cerr << "swarmdesign: note: " << note << "\n";
-  const design::ParameterSpace space = design::build_design_space(choice);
-
-  design::IraceScenarioSpec scenario;
-  scenario.max_experiments = parse_budget(o.budget);
-  // irace 3.5 refuses a budget below this minimum (computeMinimumBudget, which counts the
-  // scenario's nbIterations): say so now rather than write files irace will not run.
-  require_minimum_budget(scenario.max_experiments, space, o.iterations);
-  scenario.seed = o.seed.empty() ? 0 : parse_seed(o.seed);
-  scenario.digits = space.digits();
-  scenario.nb_iterations = o.iterations;
-  design::TargetRunnerSpec runner;
-  runner.executable = std::filesystem::read_symlink("/proc/self/exe").string();
-  runner.mission = mission_reference(o.mission);
-  runner.maximise = mission.objective.direction == Direction::Maximize;
-  design::write_irace_files(o.out, space, scenario, {mission.name}, runner);
+  app::IraceExportRequest request;
+  request.mission = o.mission;
+  request.space = o.flags.request();
+  request.budget = app::parse_budget(o.budget);
+  request.seed = o.seed.empty() ? 0 : app::parse_seed(o.seed);
+  request.iterations = o.iterations;
+  request.out = o.out;
+  request.executable = std::filesystem::read_symlink("/proc/self/exe").string();
+  for (const auto& note : app::export_irace(request)) std::cerr << "swarmdesign: note: " << note << "\n";
   std::cout << "Wrote parameters.txt, scenario.txt, instances.txt and target-runner to " << o.out << ".\n"
             << "Run irace 3.5 with:\n  cd " << o.out
             << " && Rscript -e 'irace::irace.cmdline(c(\"--scenario\", \"scenario.txt\"))'\n";

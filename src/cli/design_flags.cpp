@@ -2,10 +2,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include <random>
-
-#include "storage/validation.hpp"
-
 namespace sd::cli {
 
 design::DesignSpaceRequest DesignSpaceFlags::request() const {
@@ -30,23 +26,6 @@ void add_design_space_flags(CLI::App& command, DesignSpaceFlags& flags) {
   command.add_flag("--coconut", flags.coconut, "Use the Coconut modules");
   command.add_flag("--maple", flags.maple, "Use the Maple modules");
   command.add_flag("--arlequin", flags.arlequin, "Use the Arlequin modules");
-}
-
-std::uint64_t parse_seed(const std::string& text) {
-  if (text.empty() || text.size() > 19 || text.find_first_not_of("0123456789") != std::string::npos)
-    throw UsageError("--seed '" + text + "': expected a non-negative integer");
-  return std::stoull(text);
-}
-
-std::uint64_t random_seed() {
-  std::random_device device;
-  return std::uniform_int_distribution<std::uint64_t>(1, 2147483647)(device);
-}
-
-long long parse_budget(const std::string& text) {
-  const auto budget = storage::parse_positive_integer(text);
-  if (!budget) throw UsageError("the budget must be a positive integer (a number of simulation runs), not '" + text + "'");
-  return *budget;
 }
 
 }  // namespace sd::cli

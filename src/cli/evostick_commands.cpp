@@ -3,183 +3,62 @@
 // mission (--mission); --state FILE keeps its state at every generation and --resume FILE
 // continues it after a kill. Settings and their defaults: src/evostick/evolution.hpp.
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <iostream>
-#include <memory>
-#include <optional>
+#include <signal.h>
 #include <unistd.h>
 
+#include <cstdlib>
+#include <iostream>
+#include <memory>
+
+#include "app/evolution_job.hpp"
+#include "app/inputs.hpp"
 #include "cli/command_registry.hpp"
-#include "cli/design_run.hpp"
-#include "cli/mission_input.hpp"
-#include "cli/resumable_runs.hpp"
+#include "cli/progress_line.hpp"
 #include "control/config_string.hpp"
-#include "evaluation/results_version.hpp"
-#include "evostick/evolution.hpp"
 #include "evostick/module_training.hpp"
-#include "evostick/saved_evolution.hpp"
-#include "evostick/weight_document.hpp"
-#include "missions/catalogue.hpp"
 
 namespace sd::cli {
 namespace {
 
-using nlohmann::json;
-
 struct Options {
-  std::string module, mission, output, state, resume;
-  std::int64_t budget = 0;
+  std::string module, mission, output, state, resume, budget;
   int threads = 0;
   bool json = false;
   evostick::Settings settings;
 };
 
-/// "\rgeneration 3/20: best mean ..., population mean ..." on stderr, when it is a terminal.
-class ProgressLine {
- public:
-  ProgressLine(bool enabled, int generations) : enabled_(enabled), generations_(generations) {}
-  ~ProgressLine() {
-    if (enabled_ && shown_) std::fprintf(stderr, "\r\033[K");
+void print(const app::EvolutionOutcome& out, const Options& o) {
+  if (o.json) {
+    std::cout << out.document;
+    return;
   }
-  ProgressLine(const ProgressLine&) = delete;
-  ProgressLine& operator=(const ProgressLine&) = delete;
-  evostick::Progress callback() {
-    if (!enabled_) return {};
-    return [this](const evostick::GenerationRecord& r) {
-      std::fprintf(stderr, "\r\033[Kgeneration %d/%d: best mean %s, population mean %s", r.generation, generations_,
-                   format_number(r.best_mean).c_str(), format_number(r.population_mean).c_str());
-      std::fflush(stderr);
-      shown_ = true;
+  std::cout << out.control_software << "\n"
+            << "Mean " << format_number(out.result.best_mean) << "\n"
+            << "Runs " << out.result.runs << "\n"
+            << "Generations " << out.settings.generations << "\n";
+  if (!out.measure.empty()) std::cout << "Measure " << out.measure << " (maximised)\n";
+  if (!o.output.empty()) std::cout << "Written to " << o.output << "\n";
+}
+
+/// Runs the evolution with "generation 3/20: best mean ..." on a terminal.
+template <class Job>
+void run_with_progress(const Options& o, Job job) {
+  ProgressLine line(ProgressLine::terminal_if(!o.json));
+  app::EvolutionRun run{o.threads, {}, {}};
+  // Fault injection for the kill-and-resume test: SIGKILL right after generation N is saved.
+  if (const char* at = std::getenv("SWARMDESIGN_KILL_AT_CHECKPOINT"))
+    run.saved = [at = std::atoi(at)](int generation) {
+      if (generation == at) ::kill(::getpid(), SIGKILL);
     };
-  }
-
- private:
-  bool enabled_;
-  int generations_;
-  bool shown_ = false;
-};
-
-void write_output(const std::string& path, const std::string& text) {
-  std::ofstream out(path);
-  if (!out || !(out << text)) throw std::runtime_error("cannot write " + path);
-}
-
-ControlSoftware network(const arlequin::Weights& weights) {
-  ControlSoftware software;
-  software.architecture = Architecture::NeuralNetwork;
-  software.network.weights = weights;
-  return software;
-}
-
-void print_text(const evostick::Result& result, const evostick::Settings& settings) {
-  std::cout << to_config_string(network(result.best)) << "\n"
-            << "Mean " << format_number(result.best_mean) << "\n"
-            << "Runs " << result.runs << "\n"
-            << "Generations " << settings.generations << "\n";
-}
-
-/// Where the evolution's state goes after every generation (--state, or the file resumed from),
-/// and the state it continues from.
-struct Persistence {
-  evostick::EvolutionTarget target;
-  std::filesystem::path file;  // empty: the state is not kept
-  std::optional<evostick::Checkpoint> resume;
-
-  evostick::CheckpointSink sink() const {
-    if (file.empty()) return {};
-    return [this](const evostick::Checkpoint& c) { evostick::write_saved_evolution(file, target, c); };
-  }
-  const evostick::Checkpoint* from() const { return resume ? &*resume : nullptr; }
-};
-
-void run_module(const Options& o, const Persistence& keep) {
-  const evostick::ModuleTraining* module = evostick::find_module_training(o.module);
-  if (!module)
-    throw UsageError("--module: unknown module '" + o.module + "' (one of " + evostick::module_names_text() + ")");
-  const bool progress_shown = isatty(STDERR_FILENO) && !o.json;
-  ProgressLine line(progress_shown, o.settings.generations);
-  const evostick::Result result =
-      evostick::train_module(*module, o.settings, o.threads, line.callback(), keep.from(), keep.sink());
-  const std::string text = evostick::document_text(evostick::module_document(*module, o.settings, result));
-  if (!o.output.empty()) write_output(o.output, text);
-  if (o.json) {
-    std::cout << text;
-    return;
-  }
-  print_text(result, o.settings);
-  std::cout << "Measure " << evostick::measure_name(module->measure) << " (maximised)\n";
-  if (!o.output.empty()) std::cout << "Written to " << o.output << "\n";
-}
-
-void run_mission(const Options& o, const Mission& mission, const Persistence& keep) {
-  const bool progress_shown = isatty(STDERR_FILENO) && !o.json;
-  ProgressLine line(progress_shown, o.settings.generations);
-  ThreadedEvaluator evaluator(o.threads);
-  const evostick::Result result = evostick::evolve(mission, mission.objective.direction, evaluator, o.settings,
-                                                   line.callback(), keep.from(), keep.sink());
-  json doc{{"mission", mission.name},
-           {"direction", direction_name(mission.objective.direction)},
-           {"settings", evostick::settings_json(o.settings)},
-           {"runs", result.runs},
-           {"control_software", to_config_string(network(result.best))},
-           {"mean", result.best_mean},
-           {"weights_digest", evostick::digest_text(evostick::weight_digest(result.best))},
-           {"history", evostick::history_json(result.history)},
-           {"weights", evostick::weights_json(result.best)}};
-  if (o.budget > 0) doc["budget"] = o.budget;
-  const std::string text = evostick::document_text(doc);
-  if (!o.output.empty()) write_output(o.output, text);
-  if (o.json) {
-    std::cout << text;
-    return;
-  }
-  print_text(result, o.settings);
-  if (!o.output.empty()) std::cout << "Written to " << o.output << "\n";
-}
-
-void resume_evolution(Options o) {
-  evostick::SavedEvolution saved = evostick::read_saved_evolution(o.resume);
-  const evostick::EvolutionTarget& target = saved.target;
-  const std::string what = "the evolution in " + o.resume;
-  if (const std::string refusal = results_version_refusal(what, target.results_version); !refusal.empty())
-    throw std::runtime_error(refusal);  // first: a module has no mission file to check
-  o.settings = target.settings;
-  try {
-    o.settings.validate();
-  } catch (const std::invalid_argument& e) {
-    throw std::runtime_error(o.resume + " is a damaged EvoStick state file (" + e.what() + ")");
-  }
-  const Persistence keep{target, o.resume, std::move(saved.checkpoint)};
-  if (!target.module.empty()) {
-    o.module = target.module;
-    run_module(o, keep);
-  } else {
-    const ResumeCheck check = check_resumable(what, target.mission, target.mission_digest, target.results_version);
-    if (!check.refusal.empty()) throw std::runtime_error(check.refusal);
-    run_mission(o, check.mission, keep);
-  }
-}
-
-void start_evolution(const Options& o) {
-  Persistence keep;
-  keep.file = o.state;
-  keep.target.settings = o.settings;
-  keep.target.results_version = kResultsVersion;
-  if (!o.state.empty() && std::filesystem::exists(o.state))
-    throw UsageError("--state: " + o.state + " already holds an evolution; continue it with --resume " + o.state);
-  if (!o.module.empty()) {
-    keep.target.module = o.module;
-    run_module(o, keep);
-    return;
-  }
-  const Mission mission = load_mission_or_usage(o.mission);
-  keep.target.mission = mission_reference(o.mission);
-  keep.target.mission_digest = mission.digest;
-  run_mission(o, mission, keep);
+  if (line.mode() != ProgressLine::Mode::Off)
+    run.progress = [&](const evostick::GenerationRecord& r, int generations) {
+      line.show("generation " + std::to_string(r.generation) + "/" + std::to_string(generations) + ": best mean " +
+                format_number(r.best_mean) + ", population mean " + format_number(r.population_mean));
+    };
+  const app::EvolutionOutcome out = job(run);
+  line.clear();
+  print(out, o);
 }
 
 void register_evostick(CLI::App& app, Context& context) {
@@ -231,7 +110,7 @@ void register_evostick(CLI::App& app, Context& context) {
         if (option->count() > 0)
           throw UsageError("--resume continues with what " + o->resume + " keeps; " + option->get_name() +
                            " cannot change it");
-      resume_evolution(*o);
+      run_with_progress(*o, [&](const app::EvolutionRun& run) { return app::resume_evolution(o->resume, run, o->output); });
       return;
     }
     if (module->count() == 0 && mission->count() == 0) throw UsageError("give --module NAME, --mission M or --resume FILE");
@@ -239,13 +118,9 @@ void register_evostick(CLI::App& app, Context& context) {
       throw UsageError("--mission needs a budget: --budget RUNS or --generations G");
     if (module->count() > 0 && generations->count() == 0 && budget->count() == 0)
       o->settings.generations = evostick::kShippedGenerations;
-    try {
-      if (budget->count() > 0) o->settings.generations = evostick::generations_for_budget(o->budget, o->settings);
-      o->settings.validate();
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(e.what());
-    }
-    start_evolution(*o);
+    app::EvolutionRequest request{o->module, o->mission, o->settings, 0, o->state, o->output};
+    if (budget->count() > 0) request.budget = app::parse_budget(o->budget);
+    run_with_progress(*o, [&](const app::EvolutionRun& run) { return app::start_evolution(request, run); });
   });
 }
 

@@ -82,11 +82,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     print_error(std::string(e.what()) + " (see --help)");
     return 2;
-  } catch (const sd::cli::UsageError& e) {
-    print_error(e.what());
-    return 2;
   } catch (const std::exception& e) {
+    // One rule for every command: a malformed request exits 2, any other failure 1.
     print_error(e.what());
-    return 1;
+    return sd::app::exit_status(sd::app::classify(e));
   }
 }

@@ -5,22 +5,18 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
+#include "app/accounts.hpp"
+#include "app/documents.hpp"
+#include "app/projects.hpp"
 #include "cli/command_registry.hpp"
-#include "storage/clock.hpp"
-#include "storage/projects.hpp"
-#include "storage/validation.hpp"
-#include "storage/workspace.hpp"
 
 namespace sd::cli {
 namespace {
 
-const char* const kClusterNotYet =
-    "Running designs on a cluster is not available yet in this version of SwarmDesign: the "
-    "connection is recorded, but designs of this project cannot be run until it is.";
+using app::kClusterNotYet;
 
 struct ProjectOptions {
   std::string name;
@@ -30,37 +26,15 @@ struct ProjectOptions {
   bool json = false;
 };
 
-void require(const std::string& problem) {
-  if (!problem.empty()) throw UsageError(problem);
-}
-
 std::string where(const storage::Project& project) {
   return project.cluster ? "cluster " + project.cluster->user + "@" + project.cluster->host : "local";
 }
 
-nlohmann::json to_json(const storage::Project& project) {
-  nlohmann::json json{{"name", project.name},
-                      {"folder", project.folder.string()},
-                      {"location", project.cluster ? "cluster" : "local"},
-                      {"mission", project.mission ? nlohmann::json(*project.mission) : nlohmann::json()},
-                      {"budget", project.budget ? nlohmann::json(*project.budget) : nlohmann::json()},
-                      {"active", project.active},
-                      {"created", storage::format_time(project.created_at)}};
-  if (project.cluster) json["cluster"] = {{"host", project.cluster->host}, {"user", project.cluster->user}};
-  return json;
-}
-
 void new_project(const ProjectOptions& options) {
-  require(storage::project_name_problem(options.name));
-  std::optional<storage::ClusterConnection> cluster;
-  if (options.cluster_given) {
-    require(storage::host_problem(options.cluster_host));
-    require(storage::cluster_user_problem(options.cluster_user));
-    cluster = storage::ClusterConnection{options.cluster_host, options.cluster_user};
-  }
-  storage::Workspace workspace;
-  storage::Projects projects(workspace, workspace.require_signed_in_user());
-  const auto project = projects.create(options.name, cluster);
+  std::optional<app::ClusterRequest> cluster;
+  if (options.cluster_given) cluster = app::ClusterRequest{options.cluster_host, options.cluster_user};
+  app::Home home;
+  const auto project = app::create_project(home, app::signed_in_user(home), options.name, cluster);
   std::cout << "Created " << (cluster ? "cluster" : "local") << " project " << project.name << " in "
             << project.folder.string() << ".\n";
   if (cluster) std::cout << "Cluster: " << cluster->user << "@" << cluster->host << ". " << kClusterNotYet << '\n';
@@ -68,13 +42,10 @@ void new_project(const ProjectOptions& options) {
 }
 
 void show_projects(const ProjectOptions& options) {
-  storage::Workspace workspace;
-  storage::Projects projects(workspace, workspace.require_signed_in_user());
-  const auto list = projects.list();
+  app::Home home;
+  const auto list = app::list_projects(home, app::signed_in_user(home));
   if (options.json) {
-    auto array = nlohmann::json::array();
-    for (const auto& project : list) array.push_back(to_json(project));
-    std::cout << nlohmann::json{{"projects", array}}.dump(2) << '\n';
+    std::cout << app::projects_document(list).dump(2) << '\n';
     return;
   }
   if (list.empty()) {
@@ -114,18 +85,15 @@ void print_project(const storage::Project& project) {
 }
 
 void select_project(const ProjectOptions& options) {
-  require(storage::project_name_problem(options.name));
-  storage::Workspace workspace;
-  storage::Projects projects(workspace, workspace.require_signed_in_user());
-  print_project(projects.select(options.name));
+  app::Home home;
+  print_project(app::select_project(home, app::signed_in_user(home), options.name));
 }
 
 void active_project(const ProjectOptions& options) {
-  storage::Workspace workspace;
-  storage::Projects projects(workspace, workspace.require_signed_in_user());
-  const auto project = projects.require_active();
+  app::Home home;
+  const auto project = app::active_project(home, app::signed_in_user(home));
   if (options.json)
-    std::cout << to_json(project).dump(2) << '\n';
+    std::cout << app::project_document(project).dump(2) << '\n';
   else
     print_project(project);
 }

@@ -1,28 +1,26 @@
 // Designing in the active project: run-design (foreground or --detach, resuming an interrupted
-// design) and test-design. The design itself runs exactly as `swarmdesign design` does, in the
-// folder the designs table gives it.
+// design) and test-design. The jobs are the application layer's (app/project_design.hpp); this
+// file parses, prints, and forks a detached design.
 #include <CLI/CLI.hpp>
 #include <fcntl.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <memory>
 
+#include "app/accounts.hpp"
+#include "app/documents.hpp"
+#include "app/evaluation_job.hpp"
+#include "app/inputs.hpp"
+#include "app/project_design.hpp"
 #include "cli/command_registry.hpp"
 #include "cli/control_software_input.hpp"
+#include "cli/design_display.hpp"
 #include "cli/design_flags.hpp"
-#include "cli/design_run.hpp"
-#include "cli/score_report.hpp"
-#include "control/config_string.hpp"
-#include "missions/catalogue.hpp"
-#include "storage/design_store.hpp"
-#include "storage/designs.hpp"
-#include "storage/errors.hpp"
-#include "storage/projects.hpp"
-#include "storage/workspace.hpp"
+#include "cli/score_output.hpp"
+#include "storage/lease.hpp"
 
 namespace sd::cli {
 namespace {
@@ -35,92 +33,47 @@ struct RunDesignOptions {
   bool fresh = false;  // --new: give up an interrupted design instead of resuming it
 };
 
-/// A design the command has recorded and is about to run.
-struct Started {
-  storage::Project project;
-  storage::Design design;
-  PreparedDesign prepared;
-};
+/// This process's lease owner for a design it runs.
+std::string this_process() { return storage::local_owner(0, "cli").text(); }
 
-/// Resumes the project's interrupted design, or records a new one. Everything that can be
-/// refused is checked before the designs table changes.
-Started start_or_resume(const RunDesignOptions& o) {
-  storage::Workspace workspace;
-  storage::Projects projects(workspace, workspace.require_signed_in_user());
-  storage::Project project = projects.require_active();
-  storage::Designs designs(workspace, project);
-  const auto latest = designs.latest();
-
-  if (latest && latest->state == storage::DesignState::interrupted && !project.cluster && !o.fresh) {
-    PreparedDesign prepared;
-    try {
-      prepared = std::filesystem::exists(storage::DesignStore::file_in(latest->folder))
-                     ? prepare_resume(latest->folder, true)
-                     : prepare_new_design({latest->mission, latest->budget,
-                                           design::request_from_text(latest->architectures, latest->flavours),
-                                           latest->seed},
-                                          latest->folder);  // killed before its first checkpoint
-    } catch (const storage::DesignFolderError& e) {
-      throw storage::DesignFolderError("design " + std::to_string(latest->id) + " of " + project.name +
-                              " was interrupted and cannot be resumed: " + e.what() +
-                              " (run-design --new gives it up and starts a new design)");
-    }
-    std::cout << "Design " << latest->id << " of " << project.name << " was interrupted; resuming it";
-    std::cout << (o.flags.any() || !o.seed.empty() ? " with the settings it started with (the flags given are ignored)"
-                                                   : "")
+app::ProjectDesign start(app::Home& home, const RunDesignOptions& o) {
+  app::ProjectDesignRequest request;
+  request.space = o.flags.request();
+  request.space_given = o.flags.any() || !o.seed.empty();
+  if (!o.seed.empty()) request.seed = app::parse_seed(o.seed);
+  request.fresh = o.fresh;
+  request.owner = this_process();
+  app::ProjectDesign d = app::start_project_design(home, app::signed_in_user(home), request);
+  if (d.resumed) {
+    std::cout << "Design " << d.design.id << " of " << d.project.name << " was interrupted; resuming it"
+              << (request.space_given ? " with the settings it started with (the flags given are ignored)" : "")
               << ".\n";
-    storage::Design resumed = designs.resume(latest->id, ::getpid());
-    return {project, resumed, std::move(prepared)};
+    return d;
   }
-
-  const std::uint64_t seed = o.seed.empty() ? random_seed() : parse_seed(o.seed);
-  design::DesignSpaceChoice choice;
-  try {
-    choice = design::resolve_design_space(o.flags.request());
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(e.what());
-  }
-  std::optional<PreparedDesign> checked;
-  if (project.mission && project.budget && !project.cluster)  // else Designs::start says what is missing
-    checked = check_new_design({*project.mission, *project.budget, o.flags.request(), seed});
-  if (checked && latest && latest->state == storage::DesignState::interrupted && o.fresh) {
-    designs.abandon(latest->id);
-    std::cout << "Design " << latest->id << " of " << project.name << " is given up (failed); its data stays in "
-              << latest->folder.string() << ".\n";
-  }
-  storage::Design design =
-      designs.start({choice.architectures_text(), choice.flavours_text(), seed, static_cast<int>(::getpid())});
-  if (!checked) throw std::logic_error("a design started without a mission or budget");
-  PreparedDesign prepared = std::move(*checked);
-  prepared.folder = design.folder;
-  for (const auto& note : prepared.choice.notes) std::cerr << "swarmdesign: note: " << note << "\n";
-  std::cout << "Design " << design.id << " of " << project.name << ": mission " << design.mission << ", budget "
-            << design.budget << ", seed " << seed << ", " << choice.architectures_text() << " / "
-            << choice.flavours_text() << ".\n";
-  return {project, design, std::move(prepared)};
+  if (d.abandoned)
+    std::cout << "Design " << d.abandoned->id << " of " << d.project.name << " is given up (failed); its data stays in "
+              << d.abandoned->folder.string() << ".\n";
+  for (const auto& note : d.prepared.choice.notes) std::cerr << "swarmdesign: note: " << note << "\n";
+  std::cout << "Design " << d.design.id << " of " << d.project.name << ": mission " << d.design.mission << ", budget "
+            << d.design.budget << ", seed " << d.design.seed << ", " << d.design.architectures << " / "
+            << d.design.flavours << ".\n";
+  return d;
 }
 
-/// Runs the design and records how it ended in the designs table.
-void run_and_record(Started& s, const RunOptions& options) {
-  DesignReport report;
-  try {
-    report = run_prepared_design(s.prepared, options);
-  } catch (...) {
-    storage::Workspace workspace;
-    storage::Designs(workspace, s.project).mark_failed(s.design.id);
-    throw;
-  }
-  storage::Workspace workspace;
-  storage::Designs(workspace, s.project).finish(s.design.id, report.elites.front().configuration,
-                                                report.elites.front().mean_score);
-  print_design_report(report, false);
+/// Runs the design (the app records how it ended) and prints the report.
+void run_and_report(app::ProjectDesign& d, unsigned threads, ProgressLine::Mode mode) {
+  DesignDisplay display(mode, d.prepared.mission.objective.direction == Direction::Maximize);
+  const app::DesignOutcome outcome = app::run_project_design(d, {.threads = threads, .observer = &display});
+  display.finish();
+  print_design_report(*outcome.report);
   std::cout << "Test it on fresh seeds with: swarmdesign test-design\n" << std::flush;
 }
 
 /// Continues in a child process that survives the terminal: its own session, no terminal,
-/// output in DIR/design.log. The parent records the child as the design's process.
-void detach(Started& s, const RunOptions& options) {
-  const auto log = s.design.folder / "design.log";
+/// output in DIR/design.log. Parent and child both hand the design's lease to the child. No
+/// database connection may be open here (SQLite's rule for fork).
+void detach(app::ProjectDesign& d, unsigned threads) {
+  const auto log = d.design.folder / "design.log";
   std::cout << std::flush;
   std::fflush(nullptr);
   const pid_t child = ::fork();
@@ -136,20 +89,24 @@ void detach(Started& s, const RunOptions& options) {
     ::dup2(log_fd, STDERR_FILENO);
     ::close(null_fd);
     ::close(log_fd);
-    run_and_record(s, {options.threads, false, true});
+    d.design.owner = this_process();  // the parent records the same owner for us
+    run_and_report(d, threads, ProgressLine::Mode::Log);
     return;
   }
-  storage::Workspace workspace;
-  storage::Designs(workspace, s.project).set_pid(s.design.id, static_cast<int>(child));
-  std::cout << "Design " << s.design.id << " runs in the background (process " << child << ").\n"
+  app::hand_over(d, storage::local_owner(child, "cli").text());
+  std::cout << "Design " << d.design.id << " runs in the background (process " << child << ").\n"
             << "  watch it:  swarmdesign status\n"
             << "  its log:   " << log.string() << "\n";
 }
 
 void run_design(const RunDesignOptions& o) {
-  Started started = start_or_resume(o);
-  if (o.detach) return detach(started, {o.threads, false, true});
-  run_and_record(started, {o.threads, isatty(STDERR_FILENO) != 0, false});
+  // The home's database connection is closed before a fork: SQLite connections must not cross one.
+  app::ProjectDesign d = [&] {
+    app::Home home;
+    return start(home, o);
+  }();
+  if (o.detach) return detach(d, o.threads);
+  run_and_report(d, o.threads, ProgressLine::terminal_if(true));
 }
 
 struct TestDesignOptions {
@@ -160,38 +117,15 @@ struct TestDesignOptions {
 };
 
 void test_design(const TestDesignOptions& o, const Context& context) {
-  storage::Workspace workspace;
-  storage::Projects projects(workspace, workspace.require_signed_in_user());
-  const storage::Project project = projects.require_active();
-  if (!project.mission)
-    throw storage::NotFound("project " + project.name + " has no mission; choose one with: swarmdesign set-mission");
-  const std::vector<std::uint64_t> seeds = parse_seed_range(o.seeds);
-  ControlSoftware software;
-  try {
-    if (context.has_control_software() || !o.software.config_file.empty()) {
-      software = read_control_software(context, o.software);
-    } else {
-      const auto designs = storage::Designs(workspace, project).list();
-      const auto finished = std::find_if(designs.rbegin(), designs.rend(), [](const auto& d) { return d.best_config; });
-      if (finished == designs.rend())
-        throw UsageError("project " + project.name +
-                         " has no finished design yet: give the control software (--fsm-config ...) to test");
-      if (!o.json)
-        std::cout << "Testing the best control software of design " << finished->id << ":\n  " << *finished->best_config
-                  << "\n";
-      software = parse_control_software(*finished->best_config);
-    }
-  } catch (const ConfigError& e) {
-    throw UsageError(e.what());
-  }
-  Mission mission;
-  try {
-    mission = load_mission(*project.mission);
-  } catch (const MissionError& e) {
-    throw storage::NotFound("the mission of project " + project.name + " cannot be loaded: " + e.what());
-  }
-  const auto scores = score_seeds(mission, software, seeds, o.threads, isatty(STDERR_FILENO) && !o.json);
-  print_scores(mission, software, seeds, scores, o.json);
+  const std::vector<std::uint64_t> seeds = app::parse_seed_range(o.seeds);
+  std::optional<ControlSoftware> given;
+  if (context.has_control_software() || !o.software.config_file.empty()) given = read_control_software(context, o.software);
+  app::Home home;
+  const app::TestTarget target = app::test_target(home, app::signed_in_user(home), given);
+  if (target.design_id && !o.json)
+    std::cout << "Testing the best control software of design " << *target.design_id << ":\n  " << target.configuration
+              << "\n";
+  score_and_print(target.mission, target.software, seeds, o.threads, o.json);
 }
 
 CommandRegistrar registrar{40, [](CLI::App& app, Context& context) {

@@ -1,64 +1,21 @@
-// status: the active project's current or last design, read from the designs table and from
-// the design's own design.db (while another process may be writing it).
+// status: the active project's current or last design, as app::design_status reads it from the
+// designs table and from the design's own design.db (while another process may be writing it).
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
 #include <iostream>
 #include <memory>
 
+#include "app/accounts.hpp"
+#include "app/project_design.hpp"
 #include "cli/command_registry.hpp"
 #include "control/config_string.hpp"
-#include "storage/clock.hpp"
-#include "storage/design_status.hpp"
-#include "storage/design_store.hpp"
-#include "storage/designs.hpp"
-#include "storage/projects.hpp"
-#include "storage/workspace.hpp"
 
 namespace sd::cli {
 namespace {
 
-using nlohmann::json;
-
 struct StatusOptions {
   bool complete = false, json = false;
 };
-
-json to_json(const storage::ConfigurationScore& c) {
-  return {{"id", c.id}, {"configuration", c.command_line}, {"mean_score", c.mean_score}, {"runs", c.runs}};
-}
-
-json to_json(const storage::DesignProgress& p) {
-  json out{{"started", p.started},
-           {"phase", p.phase},
-           {"iteration", p.iteration},
-           {"total_iterations", p.nb_iterations},
-           {"experiments_used", p.experiments_used},
-           {"remaining_budget", p.budget - p.experiments_used},
-           {"race_budget", p.race_budget},
-           {"race_configurations", p.race_configurations},
-           {"configurations_sampled", p.configurations_sampled},
-           {"best", p.best ? to_json(*p.best) : json()}};
-  if (!p.finish_reason.empty()) out["finish_reason"] = p.finish_reason;
-  return out;
-}
-
-json to_json(const std::vector<storage::RaceRecord>& log) {
-  json races = json::array();
-  for (const auto& r : log) {
-    json instances = json::array(), members = json::array();
-    for (const auto& [position, seed] : r.instances) instances.push_back({{"position", position}, {"seed", seed}});
-    for (const auto& m : r.members) {
-      json member = to_json(m.configuration);
-      member["elite"] = m.elite;
-      member["eliminated_after"] = m.eliminated_after ? json(*m.eliminated_after) : json();
-      members.push_back(std::move(member));
-    }
-    races.push_back({{"iteration", r.iteration}, {"race_budget", r.race_budget}, {"instances", instances},
-                     {"configurations", members}, {"elites", r.elites}});
-  }
-  return races;
-}
 
 void print_progress(const storage::Design& d, const storage::DesignProgress& p) {
   if (!p.started) {
@@ -100,48 +57,26 @@ void print_race_log(const std::vector<storage::RaceRecord>& log) {
 }
 
 void status(const StatusOptions& o) {
-  storage::Workspace workspace;
-  storage::Projects projects(workspace, workspace.require_signed_in_user());
-  const storage::Project project = projects.require_active();
-  const auto latest = storage::Designs(workspace, project).latest();
-  if (!latest) {
-    if (o.json) std::cout << json{{"project", project.name}, {"design", nullptr}}.dump(2) << "\n";
-    else std::cout << "Project " << project.name << " has no design yet; start one with: swarmdesign run-design\n";
-    return;
-  }
-  const storage::Design& d = *latest;
-  storage::DesignProgress progress;
-  std::vector<storage::RaceRecord> log;
-  try {
-    if (std::filesystem::exists(storage::DesignStore::file_in(d.folder))) {
-      progress = storage::read_design_progress(d.folder);
-      if (o.complete) log = storage::read_race_log(d.folder);
-    }
-  } catch (const storage::DesignFolderError&) {
-    // A design that has just started may not have committed its tables yet.
-    if (d.state != storage::DesignState::running) throw;
-  }
-
+  app::Home home;
+  const app::DesignStatus status = app::design_status(home, app::signed_in_user(home), o.complete);
   if (o.json) {
-    json out{{"project", project.name},
-             {"design",
-              {{"id", d.id}, {"state", storage::to_string(d.state)}, {"pid", d.pid}, {"folder", d.folder.string()},
-               {"mission", d.mission}, {"budget", d.budget}, {"seed", d.seed}, {"architectures", d.architectures},
-               {"flavours", d.flavours}, {"created", storage::format_time(d.created_at)}}},
-             {"progress", to_json(progress)}};
-    if (o.complete) out["race_log"] = to_json(log);
-    std::cout << out.dump(2) << "\n";
+    std::cout << app::status_document(status, o.complete).dump(2) << "\n";
     return;
   }
-  std::cout << "Design " << d.id << " of " << project.name << ": " << storage::to_string(d.state);
+  if (!status.design) {
+    std::cout << "Project " << status.project.name << " has no design yet; start one with: swarmdesign run-design\n";
+    return;
+  }
+  const storage::Design& d = *status.design;
+  std::cout << "Design " << d.id << " of " << status.project.name << ": " << storage::to_string(d.state);
   if (d.state == storage::DesignState::running) std::cout << " (process " << d.pid << ")";
   std::cout << "\n  mission " << d.mission << ", budget " << d.budget << ", seed " << d.seed << ", " << d.architectures
             << " / " << d.flavours << "\n  folder " << d.folder.string() << "\n";
-  print_progress(d, progress);
+  print_progress(d, status.progress);
   if (d.state == storage::DesignState::interrupted)
     std::cout << "It was interrupted; continue it with: swarmdesign run-design\n";
   if (d.state == storage::DesignState::finished) std::cout << "Test it with: swarmdesign test-design\n";
-  if (o.complete) print_race_log(log);
+  if (o.complete) print_race_log(status.race_log);
 }
 
 CommandRegistrar registrar{41, [](CLI::App& app, Context&) {

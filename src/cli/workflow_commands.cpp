@@ -4,35 +4,22 @@
 #include <unistd.h>
 
 #include <cstdio>
-#include <filesystem>
-#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "app/accounts.hpp"
+#include "app/projects.hpp"
 #include "cli/command_registry.hpp"
 #include "missions/catalogue.hpp"
-#include "storage/errors.hpp"
-#include "storage/projects.hpp"
 #include "storage/validation.hpp"
-#include "storage/workspace.hpp"
 
 namespace sd::cli {
 namespace {
 
-// ---- The mission catalogue, behind a seam -------------------------------------------------
-// The mission catalogue (built-in missions plus $SWARMDESIGN_HOME/missions).
 using MissionEntry = sd::MissionSummary;
-
-struct MissionCatalogue {
-  std::function<std::vector<MissionEntry>()> list;
-  std::function<bool(const std::string& name_or_path)> exists;
-};
-
-MissionCatalogue catalogue() { return {&sd::list_missions, &sd::mission_exists}; }
-// ---- end of seam ----------------------------------------------------------------------------
 
 // ---- set-budget ---------------------------------------------------------------------------
 
@@ -42,13 +29,8 @@ struct WorkflowOptions {
 };
 
 void set_budget(const WorkflowOptions& options) {
-  const auto budget = storage::parse_positive_integer(options.budget);
-  if (!budget)
-    throw UsageError("budget must be a positive integer (a number of simulation runs, e.g. 200000), not '" +
-                     options.budget + "'");
-  storage::Workspace workspace;
-  storage::Projects projects(workspace, workspace.require_signed_in_user());
-  const auto project = projects.set_budget(*budget);
+  app::Home home;
+  const auto project = app::set_budget(home, app::signed_in_user(home), options.budget);
   std::cout << "Budget of " << project.name << ": " << *project.budget << " simulation runs.\n";
 }
 
@@ -81,18 +63,11 @@ std::string choose_mission(const std::vector<MissionEntry>& missions) {
 }
 
 void set_mission(const WorkflowOptions& options) {
-  const MissionCatalogue missions = catalogue();
-  storage::Workspace workspace;
-  storage::Projects projects(workspace, workspace.require_signed_in_user());
-  projects.require_active();  // before the prompt: do not ask for a choice that cannot be kept
-
-  std::string mission = options.mission.empty() ? choose_mission(missions.list()) : options.mission;
-  if (mission.empty()) throw UsageError("no mission chosen");
-  if (!missions.exists(mission))
-    throw storage::NotFound("unknown mission '" + mission + "'; run set-mission without a name to choose from the list");
-  // A mission file is kept by absolute path so the project works from any directory.
-  if (mission.find('/') != std::string::npos) mission = std::filesystem::absolute(mission).lexically_normal().string();
-  const auto project = projects.set_mission(mission);
+  app::Home home;
+  const storage::User user = app::signed_in_user(home);
+  app::active_project(home, user);  // before the prompt: do not ask for a choice that cannot be kept
+  const std::string mission = options.mission.empty() ? choose_mission(sd::list_missions()) : options.mission;
+  const auto project = app::set_mission(home, user, mission);
   std::cout << "Mission of " << project.name << ": " << *project.mission << ".\n";
 }
 

@@ -100,7 +100,7 @@ TEST(Cli, MalformedInputGetsOneLineErrorsAndExitStatusTwo) {
       {"evaluate --mission aac --fsm-config --nstates 1 --s0 14 --att0 9", "--att0 9"},
       {"evaluate --mission aac --fsm-config --nstates 1 --s0 11 --rwm0 3", "--rwm0 3"},
       {"evaluate --mission atlantis" + kRandomWalk, "unknown mission 'atlantis'"},
-      {"evaluate --mission aac --seeds 5-2" + kRandomWalk, "--seeds '5-2'"},
+      {"evaluate --mission aac --seeds 5-2" + kRandomWalk, "seeds '5-2': the range is empty"},
       {"evaluate --mission aac", "no control software"},
       {"evaluate" + kRandomWalk, "--mission is required"},
       {"frobnicate", "frobnicate"},

@@ -87,7 +87,7 @@ TEST_F(workflow_bad_input, BudgetMustBeAPositiveInteger) {
   alice_and_bob();
   std::vector<BadInput> cases;
   for (const char* budget : {"0", "-5", "abc", "1.5", "1e5", "+7", " 12", "12 ", "", "99999999999999999999"})
-    cases.push_back({{"set-budget", budget}, "", 2, "budget must be a positive integer"});
+    cases.push_back({{"set-budget", budget}, "", 2, "expected a positive integer"});
   cases.push_back({{"set-budget"}, "", 2, "N is required"});
   expect_all_refused(cases);
 }
@@ -95,8 +95,9 @@ TEST_F(workflow_bad_input, BudgetMustBeAPositiveInteger) {
 TEST_F(workflow_bad_input, MissionMustBeInTheCatalogue) {
   alice_and_bob();
   expect_all_refused({
-      {{"set-mission", "no-such-mission"}, "", 1, "unknown mission 'no-such-mission'"},
-      {{"set-mission"}, "no-such-mission\n", 1, "unknown mission 'no-such-mission'"},
+      // An unknown name is a malformed request (exit 2), the same for set-mission as for evaluate.
+      {{"set-mission", "no-such-mission"}, "", 2, "unknown mission 'no-such-mission'"},
+      {{"set-mission"}, "no-such-mission\n", 2, "unknown mission 'no-such-mission'"},
       {{"set-mission"}, "99\n", 2, "there is no mission number 99"},
       {{"set-mission"}, "", 2, "no mission chosen"},
       {{"set-mission"}, "\n", 2, "no mission chosen"},

@@ -27,14 +27,15 @@ class design_command : public WorkflowTest {
     return {"design", "--mission", mission_, "--budget", std::to_string(budget), "--seed", std::to_string(seed),
             "--threads", std::to_string(threads), "--out", (scratch() / out).string(), "--json", "--fsm", "--chocolate"};
   }
-  /// Starts a design in the background and SIGKILLs it once it has saved `steps` more checkpoints.
+  /// Runs a design that is SIGKILLed right after it saves its `steps`-th new checkpoint: the
+  /// kill lands at that step exactly, however fast the machine.
   void kill_after(const std::vector<std::string>& args, const std::filesystem::path& folder, std::int64_t steps) {
     const std::int64_t before = checkpoint_step(folder);
-    const int pid = start_swarmdesign(args, environment(), (scratch() / "bg.out").string(), (scratch() / "bg.err").string());
-    const bool reached = wait_until([&] { return checkpoint_step(folder) >= before + steps; }, 60s);
-    ::kill(pid, SIGKILL);
-    EXPECT_EQ(wait_swarmdesign(pid), -1) << "the design ended before it could be killed";
-    ASSERT_TRUE(reached) << "no checkpoint after 60 s";
+    kill_at_checkpoint(before + steps);
+    const Outcome killed = run(args);
+    kill_at_checkpoint(0);
+    EXPECT_EQ(killed.exit_code, -1) << "the design ended before it could be killed: " << killed.err;
+    ASSERT_EQ(checkpoint_step(folder), before + steps);
   }
   std::string mission_;
 };

@@ -23,8 +23,13 @@ void WorkflowTest::TearDown() {
 
 Environment WorkflowTest::environment() const {
   // HOME points into the scratch folder too, so nothing can touch the real one.
-  return Environment{{{"SWARMDESIGN_HOME", home_.string()}, {"HOME", (scratch_ / "user-home").string()}},
-                     {"XDG_DATA_HOME"}};
+  Environment environment{{{"SWARMDESIGN_HOME", home_.string()}, {"HOME", (scratch_ / "user-home").string()}},
+                          {"XDG_DATA_HOME", "SWARMDESIGN_KILL_AT_CHECKPOINT"}};
+  if (kill_at_checkpoint_ > 0) {
+    environment.set["SWARMDESIGN_KILL_AT_CHECKPOINT"] = std::to_string(kill_at_checkpoint_);
+    environment.unset.pop_back();
+  }
+  return environment;
 }
 
 Outcome WorkflowTest::run(const std::vector<std::string>& args, const std::string& input) {

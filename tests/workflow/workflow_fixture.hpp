@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,9 @@ class WorkflowTest : public ::testing::Test {
   const std::filesystem::path& scratch() const { return scratch_; }
   std::filesystem::path database() const { return home_ / "swarmdesign.db"; }
   Environment environment() const;
+  /// The next commands run with SWARMDESIGN_KILL_AT_CHECKPOINT=step: a design SIGKILLs itself
+  /// right after saving that checkpoint (0: no longer).
+  void kill_at_checkpoint(std::int64_t step) { kill_at_checkpoint_ = step; }
 
   /// Every table's rows, the files under the home (but the database's own) and the
   /// session token: what a refused command must not change.
@@ -40,6 +44,7 @@ class WorkflowTest : public ::testing::Test {
  private:
   std::filesystem::path scratch_;
   std::filesystem::path home_;
+  std::int64_t kill_at_checkpoint_ = 0;
 };
 
 /// Expects the one-line error of the command contract with this exit code.

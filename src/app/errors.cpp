@@ -1,0 +1,21 @@
+#include "app/errors.hpp"
+
+#include "control/config_string.hpp"
+#include "missions/mission.hpp"
+
+namespace sd::app {
+
+ErrorKind classify(const std::exception& error) {
+  if (dynamic_cast<const InvalidRequest*>(&error) || dynamic_cast<const storage::InvalidInput*>(&error) ||
+      dynamic_cast<const ConfigError*>(&error) || dynamic_cast<const MissionError*>(&error))
+    return ErrorKind::InvalidRequest;
+  if (dynamic_cast<const NotFound*>(&error)) return ErrorKind::NotFound;
+  if (dynamic_cast<const Conflict*>(&error)) return ErrorKind::Conflict;
+  if (dynamic_cast<const AccessDenied*>(&error)) return ErrorKind::AccessDenied;
+  if (dynamic_cast<const DesignFolderError*>(&error)) return ErrorKind::Refused;
+  return ErrorKind::Failed;
+}
+
+int exit_status(ErrorKind kind) { return kind == ErrorKind::InvalidRequest ? 2 : 1; }
+
+}  // namespace sd::app

@@ -1,0 +1,48 @@
+#include "app/evaluation_job.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <optional>
+#include <span>
+
+#include "app/errors.hpp"
+#include "evaluation/simulation.hpp"
+#include "evaluation/trace_writer.hpp"
+#include "missions/catalogue.hpp"
+
+namespace sd::app {
+
+std::vector<double> score_seeds(const Mission& mission, const ControlSoftware& software,
+                                const std::vector<std::uint64_t>& seeds, const ScoreOptions& options) {
+  std::vector<double> scores(seeds.size());
+  std::optional<ThreadedEvaluator> threads;
+  Evaluator& evaluator = options.evaluator ? *options.evaluator : threads.emplace(options.threads);
+  std::vector<EvaluationTask> tasks;
+  for (const auto s : seeds) tasks.push_back({&software, s, 0});
+  const std::size_t batch = options.progress ? static_cast<std::size_t>(std::max(1, evaluator.workers()) * 4) : tasks.size();
+  for (std::size_t start = 0; start < tasks.size(); start += batch) {
+    const std::size_t count = std::min(batch, tasks.size() - start);
+    evaluator.evaluate(mission, std::span(tasks).subspan(start, count), std::span(scores).subspan(start, count));
+    if (options.progress) options.progress(start + count, tasks.size());
+  }
+  return scores;
+}
+
+double traced_run(const Mission& mission, const ControlSoftware& software, std::uint64_t seed,
+                  const std::filesystem::path& trace) {
+  std::ofstream out(trace);
+  if (!out) throw std::runtime_error("cannot write the trace file " + trace.string());
+  TraceWriter writer(out);
+  Simulation simulation(mission, software);
+  return simulation.run(seed, &writer);
+}
+
+Mission load_requested_mission(const std::string& name_or_path) {
+  try {
+    return load_mission(name_or_path);
+  } catch (const MissionError& e) {
+    throw InvalidRequest(e.what());
+  }
+}
+
+}  // namespace sd::app

@@ -1,0 +1,183 @@
+#include "app/project_design.hpp"
+
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+
+#include "app/documents.hpp"
+#include "app/errors.hpp"
+#include "app/inputs.hpp"
+#include "control/config_string.hpp"
+#include "missions/catalogue.hpp"
+#include "storage/design_store.hpp"
+#include "storage/lease.hpp"
+
+namespace sd::app {
+
+namespace {
+
+/// Renews a running design's lease every kHeartbeatSeconds on its own connection, until stopped.
+class LeaseKeeper {
+ public:
+  LeaseKeeper(const ProjectDesign& d) : thread_([this, home = d.home, project = d.project, id = d.design.id,
+                                                 owner = d.design.owner] { renew(home, project, id, owner); }) {}
+  ~LeaseKeeper() { stop(); }
+  LeaseKeeper(const LeaseKeeper&) = delete;
+  LeaseKeeper& operator=(const LeaseKeeper&) = delete;
+
+  void stop() {
+    {
+      std::lock_guard lock(mutex_);
+      stopping_ = true;
+    }
+    wake_.notify_all();
+    if (thread_.joinable()) thread_.join();
+  }
+
+ private:
+  void renew(const std::filesystem::path& home, const storage::Project& project, std::int64_t id,
+             const std::string& owner) {
+    std::unique_lock lock(mutex_);
+    while (!wake_.wait_for(lock, std::chrono::seconds(storage::kHeartbeatSeconds), [&] { return stopping_; })) {
+      lock.unlock();
+      try {
+        Home h(home);
+        storage::Designs(h.workspace(), project).heartbeat(id, owner);
+      } catch (const std::exception&) {
+        // A busy database misses one beat; the lease lasts several.
+      }
+      lock.lock();
+    }
+  }
+
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool stopping_ = false;
+  std::thread thread_;
+};
+
+}  // namespace
+
+ProjectDesign start_project_design(Home& home, const storage::User& user, const ProjectDesignRequest& request) {
+  storage::Workspace& workspace = home.workspace();
+  storage::Projects projects(workspace, user);
+  storage::Project project = projects.require_active();
+  storage::Designs designs(workspace, project);
+  const auto latest = designs.latest();
+
+  if (latest && latest->state == storage::DesignState::interrupted && !project.cluster && !request.fresh) {
+    PreparedDesign prepared;
+    try {
+      prepared = std::filesystem::exists(storage::DesignStore::file_in(latest->folder))
+                     ? prepare_resume(latest->folder, true)
+                     : prepare_new_design({latest->mission, latest->budget,
+                                           design::request_from_text(latest->architectures, latest->flavours),
+                                           latest->seed},
+                                          latest->folder);  // killed before its first checkpoint
+    } catch (const std::exception& e) {
+      throw DesignFolderError("design " + std::to_string(latest->id) + " of " + project.name +
+                              " was interrupted and cannot be resumed: " + e.what() +
+                              " (run-design --new gives it up and starts a new design)");
+    }
+    storage::Design resumed = designs.resume(latest->id, request.owner);
+    return {workspace.home(), project, resumed, std::move(prepared), true, std::nullopt};
+  }
+
+  const std::uint64_t seed = request.seed ? *request.seed : random_seed();
+  const design::DesignSpaceChoice choice = resolve_space(request.space);
+  std::optional<PreparedDesign> checked;
+  if (project.mission && project.budget && !project.cluster)  // else Designs::start says what is missing
+    checked = check_new_design({*project.mission, *project.budget, request.space, seed});
+  std::optional<storage::Design> abandoned;
+  if (checked && latest && latest->state == storage::DesignState::interrupted && request.fresh) {
+    designs.abandon(latest->id);
+    abandoned = latest;
+  }
+  storage::Design design = designs.start({choice.architectures_text(), choice.flavours_text(), seed, request.owner});
+  if (!checked) throw std::logic_error("a design started without a mission or budget");
+  PreparedDesign prepared = std::move(*checked);
+  prepared.folder = design.folder;
+  return {workspace.home(), project, design, std::move(prepared), false, abandoned};
+}
+
+DesignOutcome run_project_design(ProjectDesign& d, const DesignRunOptions& options) {
+  DesignOutcome outcome;
+  {
+    LeaseKeeper lease(d);
+    try {
+      outcome = run_design(d.prepared, options);
+    } catch (...) {
+      lease.stop();
+      Home home(d.home);
+      storage::Designs(home.workspace(), d.project).mark_failed(d.design.id);
+      throw;
+    }
+  }
+  Home home(d.home);
+  storage::Designs designs(home.workspace(), d.project);
+  if (outcome.cancelled) designs.release(d.design.id, d.design.owner);
+  else designs.finish(d.design.id, outcome.report->elites.front().configuration, outcome.report->elites.front().mean_score);
+  return outcome;
+}
+
+void hand_over(ProjectDesign& d, const std::string& new_owner) {
+  Home home(d.home);
+  storage::Designs(home.workspace(), d.project).set_owner(d.design.id, new_owner);
+  d.design.owner = new_owner;
+}
+
+DesignStatus design_status(Home& home, const storage::User& user, bool complete) {
+  DesignStatus status;
+  status.project = storage::Projects(home.workspace(), user).require_active();
+  status.design = storage::Designs(home.workspace(), status.project).latest();
+  if (!status.design) return status;
+  const storage::Design& d = *status.design;
+  try {
+    if (std::filesystem::exists(storage::DesignStore::file_in(d.folder))) {
+      status.progress = storage::read_design_progress(d.folder);
+      if (complete) status.race_log = storage::read_race_log(d.folder);
+    }
+  } catch (const storage::DesignFolderError&) {
+    // A design that has just started may not have committed its tables yet.
+    if (d.state != storage::DesignState::running) throw;
+  }
+  return status;
+}
+
+nlohmann::json status_document(const DesignStatus& status, bool complete) {
+  if (!status.design) return {{"project", status.project.name}, {"design", nullptr}};
+  nlohmann::json out{{"project", status.project.name},
+                     {"design", design_row_document(*status.design)},
+                     {"progress", stored_progress_document(status.progress)}};
+  if (complete) out["race_log"] = race_log_document(status.race_log);
+  return out;
+}
+
+TestTarget test_target(Home& home, const storage::User& user, const std::optional<ControlSoftware>& given) {
+  TestTarget target;
+  target.project = storage::Projects(home.workspace(), user).require_active();
+  const storage::Project& project = target.project;
+  if (!project.mission)
+    throw NotFound("project " + project.name + " has no mission; choose one with: swarmdesign set-mission");
+  if (given) {
+    target.software = *given;
+    target.configuration = to_config_string(*given);
+  } else {
+    const auto designs = storage::Designs(home.workspace(), project).list();
+    const auto finished = std::find_if(designs.rbegin(), designs.rend(), [](const auto& d) { return d.best_config; });
+    if (finished == designs.rend())
+      throw NotFound("project " + project.name +
+                     " has no finished design yet: give the control software (--fsm-config ...) to test");
+    target.design_id = finished->id;
+    target.software = parse_control_software(*finished->best_config);
+    target.configuration = *finished->best_config;
+  }
+  try {
+    target.mission = load_mission(*project.mission);
+  } catch (const MissionError& e) {
+    throw NotFound("the mission of project " + project.name + " cannot be loaded: " + e.what());
+  }
+  return target;
+}
+
+}  // namespace sd::app

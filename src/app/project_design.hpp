@@ -1,0 +1,74 @@
+#pragma once
+// Designs of a project: the jobs behind `run-design`, `status` and `test-design`, and behind
+// a server's "start", "watch" and "stop" buttons. A design in a project is a design job
+// (design_job.hpp) whose row in the designs table is leased by the job that runs it
+// (storage/lease.hpp): renewed while it runs, released when it is cancelled, finished or
+// failed when it ends, and found interrupted when its owner dies.
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/design_job.hpp"
+#include "app/home.hpp"
+#include "storage/design_status.hpp"
+#include "storage/designs.hpp"
+#include "storage/projects.hpp"
+
+namespace sd::app {
+
+struct ProjectDesignRequest {
+  design::DesignSpaceRequest space;
+  bool space_given = false;           // flags were given (ignored when an interrupted design resumes)
+  std::optional<std::uint64_t> seed;  // nullopt: a random seed
+  bool fresh = false;                 // give up an interrupted design instead of resuming it
+  std::string owner;                  // storage::Owner::text() of the job that will run it
+};
+
+struct ProjectDesign {
+  std::filesystem::path home;         // the SwarmDesign home that records it
+  storage::Project project;
+  storage::Design design;             // as recorded: running, owned by the request's owner
+  PreparedDesign prepared;
+  bool resumed = false;
+  std::optional<storage::Design> abandoned;  // an interrupted design given up by `fresh`
+};
+
+/// Resumes the project's interrupted design (unless `fresh`), or records a new one with the
+/// project's mission and budget. Everything that can be refused is checked before the designs
+/// table changes.
+ProjectDesign start_project_design(Home& home, const storage::User& user, const ProjectDesignRequest& request);
+
+/// Runs it, renewing its lease, and records how it ended: finished (best configuration and
+/// score), failed (an error, rethrown), or interrupted (cancelled: it resumes later).
+DesignOutcome run_project_design(ProjectDesign& design, const DesignRunOptions& options);
+
+/// Hands a running design to another owner (a detached child process takes it over); both
+/// sides call it with the same owner text.
+void hand_over(ProjectDesign& design, const std::string& new_owner);
+
+/// The active project's current or last design with what its design.db says.
+struct DesignStatus {
+  storage::Project project;
+  std::optional<storage::Design> design;
+  storage::DesignProgress progress;
+  std::vector<storage::RaceRecord> race_log;  // with `complete`
+};
+DesignStatus design_status(Home& home, const storage::User& user, bool complete);
+nlohmann::json status_document(const DesignStatus& status, bool complete);
+
+/// What test-design scores: the given control software, or the best of the project's last
+/// finished design, on the project's mission.
+struct TestTarget {
+  storage::Project project;
+  Mission mission;
+  ControlSoftware software;
+  std::optional<std::int64_t> design_id;  // when it is a design's best
+  std::string configuration;              // its configuration string
+};
+TestTarget test_target(Home& home, const storage::User& user, const std::optional<ControlSoftware>& given);
+
+}  // namespace sd::app

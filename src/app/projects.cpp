@@ -1,0 +1,62 @@
+#include "app/projects.hpp"
+
+#include "app/errors.hpp"
+#include "app/inputs.hpp"
+#include "missions/catalogue.hpp"
+#include "storage/validation.hpp"
+
+namespace sd::app {
+
+namespace {
+void require(const std::string& problem) {
+  if (!problem.empty()) throw InvalidRequest(problem);
+}
+}  // namespace
+
+const char* const kClusterNotYet =
+    "Running designs on a cluster is not available yet in this version of SwarmDesign: the "
+    "connection is recorded, but designs of this project cannot be run until it is.";
+
+storage::Project create_project(Home& home, const storage::User& user, const std::string& name,
+                                const std::optional<ClusterRequest>& cluster) {
+  require(storage::project_name_problem(name));
+  std::optional<storage::ClusterConnection> connection;
+  if (cluster) {
+    require(storage::host_problem(cluster->host));
+    require(storage::cluster_user_problem(cluster->user));
+    connection = storage::ClusterConnection{cluster->host, cluster->user};
+  }
+  return storage::Projects(home.workspace(), user).create(name, connection);
+}
+
+std::vector<storage::Project> list_projects(Home& home, const storage::User& user) {
+  return storage::Projects(home.workspace(), user).list();
+}
+
+storage::Project select_project(Home& home, const storage::User& user, const std::string& name) {
+  require(storage::project_name_problem(name));
+  return storage::Projects(home.workspace(), user).select(name);
+}
+
+storage::Project active_project(Home& home, const storage::User& user) {
+  return storage::Projects(home.workspace(), user).require_active();
+}
+
+storage::Project set_budget(Home& home, const storage::User& user, const std::string& budget) {
+  const long long runs = parse_budget(budget);
+  return storage::Projects(home.workspace(), user).set_budget(runs);
+}
+
+storage::Project set_mission(Home& home, const storage::User& user, const std::string& mission) {
+  if (mission.empty()) throw InvalidRequest("no mission chosen");
+  storage::Projects projects(home.workspace(), user);
+  projects.require_active();
+  try {
+    load_mission(mission);
+  } catch (const MissionError& e) {
+    throw InvalidRequest(std::string(e.what()) + "; run set-mission without a name to choose from the list");
+  }
+  return projects.set_mission(mission_reference(mission));
+}
+
+}  // namespace sd::app

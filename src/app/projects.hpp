@@ -1,0 +1,35 @@
+#pragma once
+// A user's projects and their design settings (mission, budget), for any front end. Every call
+// takes the user explicitly: the CLI passes the one signed in on this machine, a server the one
+// of the request's session, so a user only ever reaches their own projects.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/home.hpp"
+#include "storage/projects.hpp"
+
+namespace sd::app {
+
+struct ClusterRequest {
+  std::string host, user;
+};
+
+/// InvalidRequest for a malformed name, host or cluster user; Conflict for a taken name.
+storage::Project create_project(Home& home, const storage::User& user, const std::string& name,
+                                const std::optional<ClusterRequest>& cluster);
+std::vector<storage::Project> list_projects(Home& home, const storage::User& user);
+storage::Project select_project(Home& home, const storage::User& user, const std::string& name);
+/// NotFound with a hint when none is selected.
+storage::Project active_project(Home& home, const storage::User& user);
+
+/// The budget as typed (app::parse_budget's rule).
+storage::Project set_budget(Home& home, const storage::User& user, const std::string& budget);
+/// A catalogue name, or a mission file stored by absolute path (mission_reference's rule), so
+/// the project runs from any folder; InvalidRequest for a mission that cannot be loaded.
+storage::Project set_mission(Home& home, const storage::User& user, const std::string& mission);
+
+/// What is said of a cluster project until cluster runs exist.
+extern const char* const kClusterNotYet;
+
+}  // namespace sd::app

@@ -1,0 +1,63 @@
+#include "cli/design_display.hpp"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+
+#include "control/config_string.hpp"
+#include "control/describe.hpp"
+
+namespace sd::cli {
+
+DesignDisplay::DesignDisplay(ProgressLine::Mode mode, bool maximise) : line_(mode), maximise_(maximise) {
+  // Fault injection for the kill-and-resume tests: SIGKILL this process right after checkpoint
+  // N is durable, so a test kills at exactly the step it means to, on any machine's speed.
+  if (const char* at = std::getenv("SWARMDESIGN_KILL_AT_CHECKPOINT")) kill_at_checkpoint_ = std::atoll(at);
+}
+
+std::string DesignDisplay::line(const design::Progress& p) const {
+  char text[256];
+  std::snprintf(text, sizeof text, "iteration %d/%d  experiments %lld/%lld  alive %zu/%zu", p.iteration,
+                p.nb_iterations, p.experiments_used, p.budget, p.alive, p.race_configurations);
+  std::string out = text;
+  if (p.best_id > 0)
+    out += "  best so far " + format_number(maximise_ ? -p.best_mean : p.best_mean) + " (configuration " +
+           std::to_string(p.best_id) + ")";
+  return out;
+}
+
+void DesignDisplay::progress(const design::Progress& p) {
+  line_.show(line(p));
+  // A race ended when the next progress belongs to another iteration: log its last step.
+  if (have_last_ && p.iteration != last_.iteration) line_.log(line(last_));
+  last_ = p;
+  have_last_ = true;
+}
+
+void DesignDisplay::checkpoint(std::int64_t step) {
+  if (kill_at_checkpoint_ > 0 && step == kill_at_checkpoint_) ::kill(::getpid(), SIGKILL);
+}
+
+void DesignDisplay::finish() {
+  line_.clear();
+  if (line_.mode() == ProgressLine::Mode::Log && have_last_) {
+    std::fprintf(stderr, "last race: %s\n", line(last_).c_str());
+    std::fflush(stderr);
+  }
+  have_last_ = false;
+}
+
+void print_design_report(const app::DesignReport& r) {
+  const app::EliteReport& best = r.elites.front();
+  std::cout << "Design finished (" << r.finish_reason << "): " << r.experiments_used << " of " << r.budget
+            << " simulation runs, " << r.iterations << " iterations, seed " << r.seed << ".\n"
+            << "Best control software (configuration " << best.id << "): mean score " << format_number(best.mean_score)
+            << " on " << r.mission << " (" << r.direction << ") over " << best.evaluations << " runs\n"
+            << describe(r.best) << "Configuration string:\n  " << best.configuration << "\n"
+            << "Design folder: " << r.folder.string() << "\n";
+}
+
+}  // namespace sd::cli

@@ -1,0 +1,132 @@
+// A design as a job of the application layer, with no CLI in between: a test observer watches
+// it, a cancel token stops it at a checkpoint chosen in advance, prepare_resume continues it,
+// and it ends exactly where an uninterrupted run — and the `swarmdesign design` command — ends.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "app/design_job.hpp"
+#include "app/documents.hpp"
+#include "app/errors.hpp"
+#include "workflow/design_helpers.hpp"
+#include "workflow/swarmdesign_process.hpp"
+
+namespace sd::test {
+namespace {
+
+/// Counts what the design reports, and cancels it once checkpoint `cancel_at` is durable.
+class Watcher final : public app::DesignObserver {
+ public:
+  explicit Watcher(std::int64_t cancel_at = 0) : cancel_at_(cancel_at) {}
+  void progress(const design::Progress& p) override {
+    ++progress_calls;
+    EXPECT_GE(p.experiments_used, last_experiments);
+    EXPECT_LE(p.experiments_used, p.budget);
+    last_experiments = p.experiments_used;
+  }
+  void checkpoint(std::int64_t step) override {
+    EXPECT_EQ(step, last_step + 1) << "checkpoints are numbered one by one";
+    last_step = step;
+    if (cancel_at_ > 0 && step == cancel_at_) token.cancel();
+  }
+  app::CancelToken token;
+  int progress_calls = 0;
+  long long last_experiments = 0;
+  std::int64_t last_step = 0;
+
+ private:
+  std::int64_t cancel_at_;
+};
+
+class DesignJob : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    folder_ = std::filesystem::temp_directory_path() /
+              ("sd-app-" + std::to_string(::getpid()) + "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::remove_all(folder_);
+    std::filesystem::create_directories(folder_);
+    mission_ = write_short_mission(folder_).string();
+  }
+  void TearDown() override { std::filesystem::remove_all(folder_); }
+
+  app::NewDesignSettings settings(long long budget = 1100, std::uint64_t seed = 5) const {
+    design::DesignSpaceRequest space;
+    space.fsm = true;
+    space.flavours = {Flavour::Chocolate};
+    return {mission_, budget, space, seed};
+  }
+  static nlohmann::json outcome_of(const app::DesignReport& report) {
+    return design_outcome(app::design_report_document(report).dump());
+  }
+
+  std::filesystem::path folder_;
+  std::string mission_;
+};
+
+TEST_F(DesignJob, CancelledAtACheckpointAndResumedItEndsAsTheUninterruptedDesignAndTheCli) {
+  // Uninterrupted, through the library.
+  app::PreparedDesign whole = app::prepare_new_design(settings(), folder_ / "whole");
+  Watcher watch_whole;
+  const app::DesignOutcome done = app::run_design(whole, {.threads = 2, .observer = &watch_whole});
+  ASSERT_FALSE(done.cancelled);
+  ASSERT_TRUE(done.report);
+  EXPECT_GT(watch_whole.progress_calls, 10);
+  EXPECT_EQ(watch_whole.last_experiments, done.report->experiments_used);
+
+  // Cancelled at checkpoint 12 (mid-race), then resumed on another thread count.
+  const auto parts = folder_ / "parts";
+  app::PreparedDesign first = app::prepare_new_design(settings(), parts);
+  Watcher stopper(12);
+  const app::DesignOutcome stopped = app::run_design(first, {.threads = 1, .observer = &stopper, .cancel = &stopper.token});
+  EXPECT_TRUE(stopped.cancelled);
+  EXPECT_FALSE(stopped.report);
+  EXPECT_EQ(stopper.last_step, 12);
+  EXPECT_EQ(checkpoint_step(parts), 12);
+  EXPECT_LT(stopped.experiments_used, done.report->experiments_used);
+
+  app::PreparedDesign rest = app::prepare_resume(parts);
+  EXPECT_TRUE(rest.resuming);
+  Watcher watch_rest;
+  watch_rest.last_step = 12;  // the resumed design numbers its checkpoints on from the last one
+  const app::DesignOutcome resumed = app::run_design(rest, {.threads = 2, .observer = &watch_rest});
+  ASSERT_TRUE(resumed.report);
+  EXPECT_TRUE(resumed.report->resumed);
+  EXPECT_EQ(outcome_of(*resumed.report), outcome_of(*done.report));
+  EXPECT_EQ(experiment_log(parts), experiment_log(folder_ / "whole"));
+
+  // The command line runs the same job: the same design, the same result.
+  const Outcome cli = run_swarmdesign({"design", "--mission", mission_, "--budget", "1100", "--fsm", "--chocolate",
+                                       "--seed", "5", "--threads", "1", "--json", "--out", (folder_ / "cli").string()},
+                                      "", {});
+  ASSERT_EQ(cli.exit_code, 0) << cli.err;
+  EXPECT_EQ(design_outcome(cli.out), outcome_of(*done.report));
+}
+
+TEST_F(DesignJob, BadRequestsAreRefusedBeforeAnythingIsWritten) {
+  auto small = settings(50);
+  EXPECT_THROW(app::prepare_new_design(small, folder_ / "small"), app::InvalidRequest);
+  auto unknown = settings();
+  unknown.mission = "no-such-mission";
+  EXPECT_THROW(app::prepare_new_design(unknown, folder_ / "unknown"), app::InvalidRequest);
+  EXPECT_THROW(app::prepare_resume(folder_ / "nothing-here"), app::DesignFolderError);
+  EXPECT_FALSE(std::filesystem::exists(folder_ / "small"));
+  EXPECT_FALSE(std::filesystem::exists(folder_ / "unknown"));
+
+  try {
+    app::prepare_new_design(small, folder_ / "small");
+  } catch (const std::exception& e) {
+    EXPECT_EQ(app::exit_status(app::classify(e)), 2);
+    EXPECT_NE(std::string(e.what()).find("below the minimum"), std::string::npos);
+  }
+}
+
+TEST_F(DesignJob, AFinishedDesignIsNotResumedAndAFolderIsNotReused) {
+  app::PreparedDesign d = app::prepare_new_design(settings(), folder_ / "d");
+  ASSERT_TRUE(app::run_design(d, {.threads = 2}).report);
+  EXPECT_THROW(app::prepare_resume(folder_ / "d"), app::DesignFolderError);
+  EXPECT_THROW(app::prepare_new_design(settings(), folder_ / "d"), app::DesignFolderError);
+  EXPECT_NO_THROW(app::prepare_resume(folder_ / "d", true));
+}
+
+}  // namespace
+}  // namespace sd::test
