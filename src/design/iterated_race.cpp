@@ -69,21 +69,30 @@ long long minimum_budget(const IraceOptions& o, int min_survival, int nb_iterati
   return b * (mu + each + (nb_iterations - 1) * std::max(each, t_new));
 }
 
+namespace {
+/// The options as the engine runs them: mu at least firstTest, the soft-restart threshold
+/// 10^-digits when not given. The fingerprint is taken of these, with or without an engine.
+IraceOptions effective_options(const ParameterSpace& space, IraceOptions o) {
+  o.mu = std::max(o.mu, o.first_test);
+  if (std::isnan(o.soft_restart_threshold)) o.soft_restart_threshold = math::pow(10.0, -space.digits());
+  return o;
+}
+}  // namespace
+
 IteratedRace::IteratedRace(const ParameterSpace& space, IraceOptions options, ExperimentRunner& runner)
-    : space_(space), options_(std::move(options)), runner_(runner), rng_(options_.seed) {
+    : space_(space), options_(effective_options(space, std::move(options))), runner_(runner), rng_(options_.seed) {
   if (options_.max_experiments <= 0) throw std::invalid_argument("the budget (maxExperiments) must be positive");
   if (options_.first_test <= 1) throw std::invalid_argument("firstTest must be larger than 1");
   if (options_.each_test < 1 || options_.first_test % options_.each_test != 0)
     throw std::invalid_argument("firstTest must be a multiple of eachTest");
   if (options_.n_instances == 0) throw std::invalid_argument("at least one instance is needed");
   if (!(options_.confidence > 0 && options_.confidence < 1)) throw std::invalid_argument("confidence must be in (0, 1)");
-  options_.mu = std::max(options_.mu, options_.first_test);
-  if (std::isnan(options_.soft_restart_threshold)) options_.soft_restart_threshold = math::pow(10.0, -space_.digits());
 }
 
 std::string IteratedRace::fingerprint() const { return design::fingerprint(space_, options_); }
 
-std::string fingerprint(const ParameterSpace& space, const IraceOptions& o) {
+std::string fingerprint(const ParameterSpace& space, const IraceOptions& options) {
+  const IraceOptions o = effective_options(space, options);
   Fnv f;
   f.add(static_cast<double>(space.digits()));
   for (const Parameter& p : space.parameters()) {

@@ -90,6 +90,20 @@ TEST(design_IteratedRace, FirstIterationScheduleMatchesIrace) {
   EXPECT_EQ(st.instances.size(), 750u);  // ceil(3000 / minSurvival) positions
 }
 
+TEST(design_IteratedRace, TheFingerprintWithoutAnEngineIsTheEnginesOwn) {
+  // Design folders store the engine-free fingerprint and checkpoints the engine's: both must be
+  // taken of the options as the engine runs them (mu raised to firstTest, the soft-restart
+  // threshold filled in), or a design would refuse to resume.
+  const ParameterSpace s = synthetic_space();
+  ThreadedRunner runner(synthetic_cost, 1);
+  IraceOptions o = options(3000, 1);
+  o.mu = 2;  // below firstTest: raised by the engine
+  EXPECT_EQ(fingerprint(s, o), IteratedRace(s, o, runner).fingerprint());
+  IraceOptions other = o;
+  other.seed = 2;
+  EXPECT_NE(fingerprint(s, other), fingerprint(s, o));
+}
+
 TEST(design_IteratedRace, RejectsAnInsufficientBudget) {
   const ParameterSpace s = synthetic_space();
   ThreadedRunner runner(synthetic_cost, 1);
