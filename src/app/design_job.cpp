@@ -3,7 +3,7 @@
 #include <chrono>
 
 #include "app/errors.hpp"
-#include "app/evaluation_job.hpp"
+#include "app/inputs.hpp"
 #include "app/resume_check.hpp"
 #include "app/simulation_runner.hpp"
 #include "control/config_string.hpp"

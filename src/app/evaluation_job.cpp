@@ -5,10 +5,8 @@
 #include <optional>
 #include <span>
 
-#include "app/errors.hpp"
 #include "evaluation/simulation.hpp"
 #include "evaluation/trace_writer.hpp"
-#include "missions/catalogue.hpp"
 
 namespace sd::app {
 
@@ -35,14 +33,6 @@ double traced_run(const Mission& mission, const ControlSoftware& software, std::
   TraceWriter writer(out);
   Simulation simulation(mission, software);
   return simulation.run(seed, &writer);
-}
-
-Mission load_requested_mission(const std::string& name_or_path) {
-  try {
-    return load_mission(name_or_path);
-  } catch (const MissionError& e) {
-    throw InvalidRequest(e.what());
-  }
 }
 
 }  // namespace sd::app

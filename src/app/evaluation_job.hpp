@@ -5,7 +5,6 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
-#include <string>
 #include <vector>
 
 #include "control/control_software.hpp"
@@ -30,8 +29,5 @@ std::vector<double> score_seeds(const Mission& mission, const ControlSoftware& s
 /// returns its score, the same as score_seeds gives for that seed.
 double traced_run(const Mission& mission, const ControlSoftware& software, std::uint64_t seed,
                   const std::filesystem::path& trace);
-
-/// A mission the user named (catalogue name or file); InvalidRequest when it cannot be loaded.
-Mission load_requested_mission(const std::string& name_or_path);
 
 }  // namespace sd::app

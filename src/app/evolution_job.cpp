@@ -4,7 +4,7 @@
 #include <fstream>
 
 #include "app/errors.hpp"
-#include "app/evaluation_job.hpp"
+#include "app/inputs.hpp"
 #include "app/resume_check.hpp"
 #include "control/config_string.hpp"
 #include "evaluation/evaluator.hpp"

@@ -1,7 +1,7 @@
 #include "app/irace_export_job.hpp"
 
 #include "app/design_job.hpp"
-#include "app/evaluation_job.hpp"
+#include "app/inputs.hpp"
 #include "design/irace_export.hpp"
 #include "missions/catalogue.hpp"
 

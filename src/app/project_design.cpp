@@ -37,12 +37,13 @@ class LeaseKeeper {
  private:
   void renew(const std::filesystem::path& home, const storage::Project& project, std::int64_t id,
              const std::string& owner) {
+    std::optional<Home> h;  // its own connection, opened at the first beat and kept
     std::unique_lock lock(mutex_);
     while (!wake_.wait_for(lock, std::chrono::seconds(storage::kHeartbeatSeconds), [&] { return stopping_; })) {
       lock.unlock();
       try {
-        Home h(home);
-        storage::Designs(h.workspace(), project).heartbeat(id, owner);
+        if (!h) h.emplace(home);
+        storage::Designs(h->workspace(), project).heartbeat(id, owner);
       } catch (const std::exception&) {
         // A busy database misses one beat; the lease lasts several.
       }
@@ -84,10 +85,10 @@ ProjectDesign start_project_design(Home& home, const storage::User& user, const 
   }
 
   const std::uint64_t seed = request.seed ? *request.seed : random_seed();
-  const design::DesignSpaceChoice choice = resolve_space(request.space);
   std::optional<PreparedDesign> checked;
   if (project.mission && project.budget && !project.cluster)  // else Designs::start says what is missing
     checked = check_new_design({*project.mission, *project.budget, request.space, seed});
+  const design::DesignSpaceChoice choice = checked ? checked->choice : resolve_space(request.space);
   std::optional<storage::Design> abandoned;
   if (checked && latest && latest->state == storage::DesignState::interrupted && request.fresh) {
     designs.abandon(latest->id);

@@ -46,8 +46,8 @@ ProjectDesign start_project_design(Home& home, const storage::User& user, const 
 /// score), failed (an error, rethrown), or interrupted (cancelled: it resumes later).
 DesignOutcome run_project_design(ProjectDesign& design, const DesignRunOptions& options);
 
-/// Hands a running design to another owner (a detached child process takes it over); both
-/// sides call it with the same owner text.
+/// Hands a running design to another owner (a detached child process takes it over): the
+/// parent records the child as owner; the child sets design.owner to the same text itself.
 void hand_over(ProjectDesign& design, const std::string& new_owner);
 
 /// The active project's current or last design with what its design.db says.

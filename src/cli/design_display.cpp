@@ -1,22 +1,15 @@
 #include "cli/design_display.hpp"
 
-#include <signal.h>
-#include <unistd.h>
-
 #include <cstdio>
-#include <cstdlib>
 #include <iostream>
 
+#include "cli/fault_injection.hpp"
 #include "control/config_string.hpp"
 #include "control/describe.hpp"
 
 namespace sd::cli {
 
-DesignDisplay::DesignDisplay(ProgressLine::Mode mode, bool maximise) : line_(mode), maximise_(maximise) {
-  // Fault injection for the kill-and-resume tests: SIGKILL this process right after checkpoint
-  // N is durable, so a test kills at exactly the step it means to, on any machine's speed.
-  if (const char* at = std::getenv("SWARMDESIGN_KILL_AT_CHECKPOINT")) kill_at_checkpoint_ = std::atoll(at);
-}
+DesignDisplay::DesignDisplay(ProgressLine::Mode mode, bool maximise) : line_(mode), maximise_(maximise) {}
 
 std::string DesignDisplay::line(const design::Progress& p) const {
   char text[256];
@@ -37,9 +30,7 @@ void DesignDisplay::progress(const design::Progress& p) {
   have_last_ = true;
 }
 
-void DesignDisplay::checkpoint(std::int64_t step) {
-  if (kill_at_checkpoint_ > 0 && step == kill_at_checkpoint_) ::kill(::getpid(), SIGKILL);
-}
+void DesignDisplay::checkpoint(std::int64_t step) { kill_if_checkpoint(step); }
 
 void DesignDisplay::finish() {
   line_.clear();

@@ -15,6 +15,7 @@ class DesignDisplay final : public app::DesignObserver {
   ~DesignDisplay() override { finish(); }
 
   void progress(const design::Progress& p) override;
+  /// Where the tests' fault injection kills (cli/fault_injection.hpp).
   void checkpoint(std::int64_t step) override;
   /// Removes the live line (terminal) or logs the last race step (log) before the report.
   void finish();
@@ -26,7 +27,6 @@ class DesignDisplay final : public app::DesignObserver {
   bool maximise_;
   design::Progress last_{};
   bool have_last_ = false;
-  std::int64_t kill_at_checkpoint_ = 0;
 };
 
 /// Text for people: how it ended, the best control software state by state, its string.

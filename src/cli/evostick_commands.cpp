@@ -4,16 +4,13 @@
 // continues it after a kill. Settings and their defaults: src/evostick/evolution.hpp.
 #include <CLI/CLI.hpp>
 
-#include <signal.h>
-#include <unistd.h>
-
-#include <cstdlib>
 #include <iostream>
 #include <memory>
 
 #include "app/evolution_job.hpp"
 #include "app/inputs.hpp"
 #include "cli/command_registry.hpp"
+#include "cli/fault_injection.hpp"
 #include "cli/progress_line.hpp"
 #include "control/config_string.hpp"
 #include "evostick/module_training.hpp"
@@ -46,11 +43,7 @@ template <class Job>
 void run_with_progress(const Options& o, Job job) {
   ProgressLine line(ProgressLine::terminal_if(!o.json));
   app::EvolutionRun run{o.threads, {}, {}};
-  // Fault injection for the kill-and-resume test: SIGKILL right after generation N is saved.
-  if (const char* at = std::getenv("SWARMDESIGN_KILL_AT_CHECKPOINT"))
-    run.saved = [at = std::atoi(at)](int generation) {
-      if (generation == at) ::kill(::getpid(), SIGKILL);
-    };
+  if (kill_at_checkpoint() > 0) run.saved = [](int generation) { kill_if_checkpoint(generation); };
   if (line.mode() != ProgressLine::Mode::Off)
     run.progress = [&](const evostick::GenerationRecord& r, int generations) {
       line.show("generation " + std::to_string(r.generation) + "/" + std::to_string(generations) + ": best mean " +
