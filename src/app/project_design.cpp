@@ -62,7 +62,7 @@ class LeaseKeeper {
 ProjectDesign start_project_design(Home& home, const storage::User& user, const ProjectDesignRequest& request) {
   storage::Workspace& workspace = home.workspace();
   storage::Projects projects(workspace, user);
-  storage::Project project = projects.require_active();
+  storage::Project project = request.project ? projects.get(*request.project) : projects.require_active();
   storage::Designs designs(workspace, project);
   const auto latest = designs.latest();
 
@@ -127,9 +127,11 @@ void hand_over(ProjectDesign& d, const std::string& new_owner) {
   d.design.owner = new_owner;
 }
 
-DesignStatus design_status(Home& home, const storage::User& user, bool complete) {
+DesignStatus design_status(Home& home, const storage::User& user, bool complete,
+                           const std::optional<std::string>& project) {
   DesignStatus status;
-  status.project = storage::Projects(home.workspace(), user).require_active();
+  storage::Projects projects(home.workspace(), user);
+  status.project = project ? projects.get(*project) : projects.require_active();
   status.design = storage::Designs(home.workspace(), status.project).latest();
   if (!status.design) return status;
   const storage::Design& d = *status.design;

@@ -26,6 +26,7 @@ struct ProjectDesignRequest {
   std::optional<std::uint64_t> seed;  // nullopt: a random seed
   bool fresh = false;                 // give up an interrupted design instead of resuming it
   std::string owner;                  // storage::Owner::text() of the job that will run it
+  std::optional<std::string> project; // a project by name (a server); nullopt: the active one
 };
 
 struct ProjectDesign {
@@ -50,14 +51,16 @@ DesignOutcome run_project_design(ProjectDesign& design, const DesignRunOptions& 
 /// parent records the child as owner; the child sets design.owner to the same text itself.
 void hand_over(ProjectDesign& design, const std::string& new_owner);
 
-/// The active project's current or last design with what its design.db says.
+/// A project's current or last design with what its design.db says: the named project, or the
+/// active one.
 struct DesignStatus {
   storage::Project project;
   std::optional<storage::Design> design;
   storage::DesignProgress progress;
   std::vector<storage::RaceRecord> race_log;  // with `complete`
 };
-DesignStatus design_status(Home& home, const storage::User& user, bool complete);
+DesignStatus design_status(Home& home, const storage::User& user, bool complete,
+                           const std::optional<std::string>& project = std::nullopt);
 nlohmann::json status_document(const DesignStatus& status, bool complete);
 
 /// What test-design scores: the given control software, or the best of the project's last

@@ -1,0 +1,66 @@
+#include "web/design_runs.hpp"
+
+#include <iostream>
+
+#include "app/errors.hpp"
+#include "storage/lease.hpp"
+
+namespace sd::web {
+
+DesignRuns::~DesignRuns() {
+  std::lock_guard lock(mutex_);
+  for (auto& [project, job] : jobs_) job->cancel.cancel();
+  for (auto& [project, job] : jobs_)
+    if (job->thread.joinable()) job->thread.join();
+}
+
+void DesignRuns::reap() {
+  for (auto it = jobs_.begin(); it != jobs_.end();) {
+    if (it->second->done) {
+      it->second->thread.join();
+      it = jobs_.erase(it);
+    } else {
+      ++it;
+    }
+  }
+}
+
+storage::Design DesignRuns::start(const storage::User& user, const std::string& project,
+                                  app::ProjectDesignRequest request) {
+  std::lock_guard lock(mutex_);
+  reap();
+  request.project = project;
+  request.owner = storage::local_owner(0, "web-" + std::to_string(next_job_++)).text();
+  app::Home home(home_);
+  // Refuses a project whose design still runs (here or in another process) before any change.
+  auto design = std::make_shared<app::ProjectDesign>(app::start_project_design(home, user, request));
+  const std::int64_t project_id = design->project.id;
+  auto job = std::make_unique<Job>();
+  Job* j = job.get();
+  j->thread = std::thread([design, j] {
+    try {
+      app::run_project_design(*design, {.threads = 0, .evaluator = nullptr, .observer = nullptr, .cancel = &j->cancel});
+    } catch (const std::exception& e) {  // recorded as failed by the job; the server goes on
+      std::cerr << "run-exp: design " << design->design.id << " failed: " << e.what() << "\n";
+    }
+    j->done = true;
+  });
+  jobs_.emplace(project_id, std::move(job));
+  return design->design;
+}
+
+bool DesignRuns::stop(std::int64_t project_id) {
+  std::lock_guard lock(mutex_);
+  const auto it = jobs_.find(project_id);
+  if (it == jobs_.end() || it->second->done) return false;
+  it->second->cancel.cancel();
+  return true;
+}
+
+bool DesignRuns::running_here(std::int64_t project_id) const {
+  std::lock_guard lock(mutex_);
+  const auto it = jobs_.find(project_id);
+  return it != jobs_.end() && !it->second->done;
+}
+
+}  // namespace sd::web

@@ -1,0 +1,50 @@
+#include "web/http_io.hpp"
+
+#include <iostream>
+
+namespace sd::web {
+
+int http_status(app::ErrorKind kind) {
+  switch (kind) {
+    case app::ErrorKind::InvalidRequest: return 400;
+    case app::ErrorKind::NotFound: return 404;
+    case app::ErrorKind::Conflict: return 409;
+    case app::ErrorKind::AccessDenied: return 403;
+    case app::ErrorKind::Refused: return 409;
+    case app::ErrorKind::Failed: return 500;
+  }
+  return 500;
+}
+
+nlohmann::json read_json_body(const httplib::Request& request) {
+  nlohmann::json body;
+  try {
+    body = nlohmann::json::parse(request.body.empty() ? std::string("{}") : request.body);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw app::InvalidRequest(std::string("the request body is not JSON: ") + e.what());
+  }
+  if (!body.is_object()) throw app::InvalidRequest("the request body must be a JSON object");
+  return body;
+}
+
+void send_json(httplib::Response& response, const nlohmann::json& body, int status) {
+  response.status = status;
+  // Replace bad UTF-8 rather than throw: a name from a file must not take the answer down.
+  response.set_content(body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), "application/json");
+}
+
+void send_error(httplib::Response& response, const std::exception& error) {
+  if (const auto* http = dynamic_cast<const HttpError*>(&error)) {
+    send_json(response, {{"error", http->what()}}, http->status);
+    return;
+  }
+  const app::ErrorKind kind = app::classify(error);
+  if (kind == app::ErrorKind::Failed) {
+    std::cerr << "run-exp: request failed: " << error.what() << "\n";
+    send_json(response, {{"error", std::string("the server failed: ") + error.what()}}, 500);
+    return;
+  }
+  send_json(response, {{"error", error.what()}}, http_status(kind));
+}
+
+}  // namespace sd::web

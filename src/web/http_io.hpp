@@ -1,0 +1,32 @@
+#pragma once
+// The one way a route reads a request and answers: JSON bodies, JSON errors with the status
+// of the application's error kind (src/app/README.md), and the HTTP-only refusals (401, 403,
+// 413) that have no application kind.
+#include <httplib.h>
+#include <nlohmann/json.hpp>
+
+#include <exception>
+#include <stdexcept>
+#include <string>
+
+#include "app/errors.hpp"
+
+namespace sd::web {
+
+/// A refusal that only HTTP has a word for: no session (401), no CSRF token (403), ...
+struct HttpError : std::runtime_error {
+  HttpError(int code, const std::string& message) : std::runtime_error(message), status(code) {}
+  int status;
+};
+
+int http_status(app::ErrorKind kind);
+
+/// The body as a JSON object; InvalidRequest naming what is wrong with it.
+nlohmann::json read_json_body(const httplib::Request& request);
+
+void send_json(httplib::Response& response, const nlohmann::json& body, int status = 200);
+/// {"error": "..."} with the status of the exception's kind; a failure of the server itself
+/// says only that it failed (the details go to the server's log).
+void send_error(httplib::Response& response, const std::exception& error);
+
+}  // namespace sd::web

@@ -1,0 +1,32 @@
+// The missions a user can run: described and drawn.
+#include "app/documents.hpp"
+#include "missions/catalogue.hpp"
+#include "missions/svg.hpp"
+#include "web/mission_access.hpp"
+#include "web/routes.hpp"
+
+namespace sd::web {
+
+void add_mission_routes(Routes& routes) {
+  routes.get("/api/missions", [](Call& call) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const MissionSummary& m : list_missions()) list.push_back(app::mission_document(load_mission(m.name)));
+    for (const std::string& file : project_mission_files(call.home, call.user)) {
+      try {
+        nlohmann::json doc = app::mission_document(load_mission(file));
+        doc["name"] = file;  // what POST /api/runs takes
+        list.push_back(std::move(doc));
+      } catch (const std::exception&) {
+        // A project whose mission file was since removed or broken: not runnable, not listed.
+      }
+    }
+    return list;
+  });
+
+  routes.get_raw("/api/missions/svg", [](Call& call) {
+    const Mission mission = load_user_mission(call.home, call.user, call.request.get_param_value("name"));
+    call.response.set_content(mission_svg(mission), "image/svg+xml");
+  });
+}
+
+}  // namespace sd::web

@@ -1,0 +1,76 @@
+#pragma once
+// How a route is declared: every /api/ route but sign-in needs a session; every POST needs a
+// JSON body and (but sign-in) the session's CSRF token; every error becomes {"error"} with its
+// status. A route is a function of a Call, so each route file is only what the route does.
+#include <httplib.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "app/home.hpp"
+#include "storage/accounts.hpp"
+#include "web/design_runs.hpp"
+#include "web/run_registry.hpp"
+#include "web/session_guard.hpp"
+
+namespace sd::web {
+
+/// What the routes share for the server's lifetime.
+struct WebContext {
+  explicit WebContext(std::filesystem::path home_folder) : home(home_folder), designs(home_folder) {}
+  std::filesystem::path home;
+  SessionGuard guard;
+  RunRegistry runs;
+  DesignRuns designs;
+};
+
+/// One request being answered: its own connection to the home (SQLite connections are per
+/// thread), the signed-in user, and the JSON body of a POST.
+struct Call {
+  const httplib::Request& request;
+  httplib::Response& response;
+  app::Home& home;
+  storage::User user;
+  nlohmann::json body;
+  WebContext& context;
+
+  /// The n-th group of the route's pattern.
+  std::string match(std::size_t n) const { return request.matches[static_cast<int>(n)].str(); }
+};
+
+class Routes {
+ public:
+  using JsonRoute = std::function<nlohmann::json(Call&)>;
+  using RawRoute = std::function<void(Call&)>;  // sets the response itself (SVG, event streams)
+
+  Routes(httplib::Server& server, WebContext& context) : server_(server), context_(context) {}
+
+  void get(const std::string& pattern, JsonRoute route);
+  void get_raw(const std::string& pattern, RawRoute route);
+  void post(const std::string& pattern, JsonRoute route);
+  /// POST without a session (sign-in): still JSON only, so no cross-site form can send it.
+  void post_public(const std::string& pattern, RawRoute route);
+
+  WebContext& context() { return context_; }
+
+ private:
+  // The handlers outlive this object (it only declares them): they hold the context, not it.
+  static void answer(WebContext& context, const httplib::Request& request, httplib::Response& response, bool post,
+                     bool session, const RawRoute& route);
+
+  httplib::Server& server_;
+  WebContext& context_;
+};
+
+/// A project name in a route pattern (storage/validation's rule for names).
+inline constexpr const char* kNamePattern = "([A-Za-z][A-Za-z0-9._-]{0,63})";
+
+void add_account_routes(Routes& routes);
+void add_software_routes(Routes& routes);
+void add_mission_routes(Routes& routes);
+void add_run_routes(Routes& routes);
+void add_project_routes(Routes& routes);
+
+}  // namespace sd::web

@@ -1,0 +1,31 @@
+#pragma once
+// The Exec runs a server holds: each belongs to the user who started it (another user's run is
+// "not found"), a bounded number run at once, and the oldest finished ones are forgotten.
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include "web/live_run.hpp"
+
+namespace sd::web {
+
+class RunRegistry {
+ public:
+  static constexpr std::size_t kMaxRunning = 8;   // simulations at once, all users together
+  static constexpr std::size_t kMaxKept = 64;     // finished runs kept for late viewers
+
+  /// Conflict when kMaxRunning runs are still simulating.
+  std::int64_t start(std::int64_t owner, Mission mission, ControlSoftware software, std::string text,
+                     std::uint64_t seed);
+  /// The run, if this user started it; NotFound otherwise (the same words either way).
+  std::shared_ptr<const LiveRun> get(std::int64_t owner, std::int64_t id) const;
+
+ private:
+  mutable std::mutex mutex_;
+  std::map<std::int64_t, std::shared_ptr<LiveRun>> runs_;
+  std::int64_t next_id_ = 1;
+};
+
+}  // namespace sd::web

@@ -1,0 +1,69 @@
+#include "web/web_server.hpp"
+
+#include <httplib.h>
+
+#include <stdexcept>
+
+#include "web/http_io.hpp"
+#include "web/routes.hpp"
+
+namespace sd::web {
+
+WebServer::WebServer(WebServerOptions options)
+    : options_(std::move(options)),
+      context_(std::make_unique<WebContext>(options_.home)),
+      server_(std::make_unique<httplib::Server>()) {
+  httplib::Server& s = *server_;
+  s.new_task_queue = [] { return new httplib::ThreadPool(kServerThreads); };
+  s.set_payload_max_length(kMaxRequestBytes);
+  s.set_read_timeout(10, 0);
+  s.set_keep_alive_max_count(100);
+
+  if (!options_.web_root.empty() && !s.set_mount_point("/", options_.web_root.string()))
+    throw std::runtime_error("the web root " + options_.web_root.string() +
+                             " is not a folder: build the front end (cmake --build build --target frontend)");
+  s.set_post_routing_handler([](const httplib::Request&, httplib::Response& response) {
+    // Everything the page loads comes from this server; nothing may frame it.
+    response.set_header("Content-Security-Policy",
+                        "default-src 'self'; img-src 'self' data: blob:; style-src 'self' 'unsafe-inline'; "
+                        "frame-ancestors 'none'");
+    response.set_header("X-Content-Type-Options", "nosniff");
+    response.set_header("Referrer-Policy", "same-origin");
+  });
+  s.set_error_handler([](const httplib::Request& request, httplib::Response& response) {
+    if (!response.body.empty()) return;
+    if (response.status == 413) send_json(response, {{"error", "the request is larger than 1 MiB"}}, 413);
+    else if (request.path.rfind("/api/", 0) == 0)
+      send_json(response, {{"error", "no such route: " + request.method + " " + request.path}}, response.status);
+  });
+
+  Routes routes(s, *context_);
+  add_account_routes(routes);
+  add_software_routes(routes);
+  add_mission_routes(routes);
+  add_run_routes(routes);
+  add_project_routes(routes);
+}
+
+WebServer::~WebServer() {
+  stop();
+  server_.reset();  // its threads end before the context they use
+  context_.reset();
+}
+
+int WebServer::bind() {
+  const int port = options_.port == 0 ? server_->bind_to_any_port(options_.host)
+                                      : (server_->bind_to_port(options_.host, options_.port) ? options_.port : -1);
+  if (port < 0)
+    throw std::runtime_error("cannot listen on " + options_.host + ":" + std::to_string(options_.port) +
+                             " (in use, or not an address of this machine)");
+  return port;
+}
+
+void WebServer::serve() { server_->listen_after_bind(); }
+
+void WebServer::stop() {
+  if (server_) server_->stop();
+}
+
+}  // namespace sd::web

@@ -1,0 +1,45 @@
+#pragma once
+// `swarmdesign run-exp`: the web app's server. It serves the built front end (frontend/ ->
+// <build>/web-root) and the API of API.md, over the application layer and nothing else.
+#include <filesystem>
+#include <memory>
+#include <string>
+
+namespace httplib {
+class Server;
+}
+
+namespace sd::web {
+
+struct WebContext;
+
+struct WebServerOptions {
+  std::string host = "127.0.0.1";  // loopback unless told otherwise
+  int port = 8080;                 // 0: any free port
+  std::filesystem::path web_root;  // the built front end
+  std::filesystem::path home;      // the SwarmDesign home (accounts, projects)
+};
+
+/// Most bytes a request body may have (a configuration string is under 2 kB).
+inline constexpr std::size_t kMaxRequestBytes = 1 << 20;
+/// Connections served at once: each event-stream viewer holds one.
+inline constexpr int kServerThreads = 96;
+
+class WebServer {
+ public:
+  explicit WebServer(WebServerOptions options);
+  ~WebServer();
+
+  /// Binds the address; returns the port (the one chosen when 0 was asked). Throws on failure.
+  int bind();
+  /// Serves until stop() (from another thread or a signal handler's thread).
+  void serve();
+  void stop();
+
+ private:
+  WebServerOptions options_;
+  std::unique_ptr<WebContext> context_;
+  std::unique_ptr<httplib::Server> server_;
+};
+
+}  // namespace sd::web
