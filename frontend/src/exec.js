@@ -1,0 +1,206 @@
+// The Exec tab: start a run (POST /api/runs), keep its stream, play / pause / step / scrub it on
+// the canvas, plot the objective, show the final score and the robots per state.
+import { api } from './api.js';
+import { createGraph, renderModel, setCounts } from './graph.js';
+import { linePlot } from './plot.js';
+import { el } from './properties.js';
+import { openRun } from './run_stream.js';
+import { describeIndex } from './software_model.js';
+import { Viewer } from './viewer.js';
+
+const $ = (id) => document.getElementById(id);
+
+export function initExec() {
+  const viewer = new Viewer($('viewer'));
+  const graph = createGraph($('exec-graph'), { readOnly: true });
+  let plot = null;
+  let stream = null;
+  let run = null;
+  let tick = 0;
+  let playing = false;
+  let ended = false;
+  let selected = -1;
+  let carry = 0;
+  let last = 0;
+  let dirty = true;
+  let plotDirty = false;
+  const timeline = $('timeline');
+
+  function speed() { return $('speed').value; }
+
+  function setPlaying(on) {
+    playing = on;
+    $('play').textContent = playing ? 'Pause' : 'Play';
+    last = performance.now();
+    carry = 0;
+  }
+
+  function showRobot() {
+    const box = $('robot-info');
+    if (!run || selected < 0 || run.received === 0) {
+      box.replaceChildren(el('p', { class: 'muted small', text: 'Click a robot.' }));
+      return;
+    }
+    const t = Math.min(tick, run.received - 1);
+    const i = t * run.robots + selected;
+    const led = run.led[i];
+    box.replaceChildren(
+      el('div', { class: 'props-title', text: `Robot ${selected}` }),
+      el('div', { testid: 'robot-state', id: 'robot-state', text: describeIndex(run.scene.software, run.state[i]) }),
+      el('div', { class: 'small muted mono', text: `x ${run.x[i].toFixed(3)}  y ${run.y[i].toFixed(3)}  yaw ${run.yaw[i].toFixed(2)}` }),
+      el('div', { class: 'small muted mono', text: `LED ${led ? `#${led.toString(16).padStart(6, '0')}` : 'off'}` }));
+  }
+
+  function counts() {
+    const t = Math.min(tick, run.received - 1);
+    const c = [];
+    for (let r = 0; r < run.robots; r++) {
+      const s = run.state[t * run.robots + r];
+      c[s] = (c[s] || 0) + 1;
+    }
+    return c;
+  }
+
+  function render() {
+    if (!run) { viewer.draw(0); return; }
+    viewer.draw(tick, { trails: $('show-trails').checked, links: $('show-links').checked, selected });
+    const shown = Math.min(tick, Math.max(0, run.received - 1));
+    $('tick-label').textContent = `tick ${shown} / ${run.ticks}  ·  ${(shown * run.scene.tick_seconds).toFixed(1)} s`;
+    timeline.value = String(shown);
+    if (run.received > 0) {
+      $('objective-now').textContent = String(run.objective[shown]);
+      setCounts(graph, run.scene.software && run.scene.software.architecture !== 'nn' ? counts() : null);
+      if (plot) plot.setMarker(shown * run.scene.tick_seconds);
+    }
+    showRobot();
+  }
+
+  function updatePlot() {
+    if (!plot || !run) return;
+    const n = run.received;
+    const xs = new Array(n);
+    for (let t = 0; t < n; t++) xs[t] = t * run.scene.tick_seconds;
+    plot.setData(xs, Array.from(run.objective.subarray(0, n)));
+  }
+
+  function frame(now) {
+    if (run && playing && run.received > 0) {
+      const s = speed();
+      const lastTick = run.received - 1;
+      if (s === 'max') tick = lastTick;
+      else if (s === 'frame') tick = Math.min(tick + 1, lastTick);
+      else {
+        carry += ((now - last) / 1000) * Number(s) / run.scene.tick_seconds;
+        const whole = Math.floor(carry);
+        carry -= whole;
+        tick = Math.min(tick + whole, lastTick);
+      }
+      if (tick >= run.ticks || (ended && tick >= lastTick)) setPlaying(false);
+      dirty = true;
+    }
+    last = now;
+    if (plotDirty) { updatePlot(); plotDirty = false; }
+    if (dirty) { render(); dirty = false; }
+    requestAnimationFrame(frame);
+  }
+  requestAnimationFrame(frame);
+
+  async function start() {
+    const text = $('exec-text').value.trim();
+    const mission = $('exec-mission').value;
+    const seed = Number($('exec-seed').value);
+    if (stream) stream.close();
+    run = null;
+    ended = false;
+    tick = 0;
+    selected = -1;
+    $('final-score').textContent = '';
+    $('exec-status').textContent = 'starting…';
+    viewer.run = null;
+    dirty = true;
+    let answer;
+    try {
+      answer = await api('/api/runs', { body: { text, mission, seed } });
+    } catch (e) {
+      $('exec-status').textContent = `refused: ${e.message}`;
+      return;
+    }
+    const started = performance.now();
+    $('exec-status').textContent = `run ${answer.id}: waiting for the scene…`;
+    stream = openRun(answer.id, {
+      scene(r) {
+        run = r;
+        viewer.setScene(r);
+        viewer.onready = () => { dirty = true; };
+        timeline.max = String(r.ticks);
+        renderModel(graph, r.scene.software, { relayout: true });
+        if (!plot) plot = linePlot($('objective-plot'), { xLabel: 'time (s)', yLabel: `objective (${r.scene.mission.objective || ''})`, height: 160 });
+        $('exec-status').textContent = `run ${answer.id}: ${r.scene.mission.name}, seed ${r.scene.seed}, ${r.robots} robots`;
+        setPlaying(true);
+        dirty = true;
+      },
+      frames(r) {
+        if (r.received && !window.__sdFirstFrameMs) window.__sdFirstFrameMs = performance.now() - started;
+        timeline.dataset.received = String(r.received);
+        plotDirty = true;
+        dirty = true;
+      },
+      end(result) {
+        ended = true;
+        $('final-score').textContent = result.scoreText;
+        $('final-score').dataset.value = String(result.score);
+        $('exec-status').textContent = `run ${answer.id} complete: ${result.ticks} ticks`;
+        dirty = true;
+      },
+      failure(message) {
+        $('exec-status').textContent = `run failed: ${message}`;
+      },
+    });
+  }
+
+  $('exec-run').addEventListener('click', start);
+  $('play').addEventListener('click', () => {
+    if (!run) return;
+    if (!playing && tick >= run.received - 1 && ended) tick = 0;
+    setPlaying(!playing);
+  });
+  $('step').addEventListener('click', () => {
+    if (!run) return;
+    setPlaying(false);
+    tick = Math.min(tick + 1, Math.max(0, run.received - 1));
+    dirty = true;
+  });
+  timeline.addEventListener('input', () => {
+    if (!run) return;
+    setPlaying(false);
+    tick = Math.min(Number(timeline.value), Math.max(0, run.received - 1));
+    dirty = true;
+  });
+  for (const id of ['show-trails', 'show-links']) $(id).addEventListener('change', () => { dirty = true; });
+  $('viewer').addEventListener('click', (e) => {
+    selected = viewer.pick(e.clientX, e.clientY, tick);
+    dirty = true;
+  });
+  window.addEventListener('resize', () => { dirty = true; });
+
+  return {
+    /// Fills the form; with `go` starts the run at once.
+    prepare({ text, mission, seed, go = false }) {
+      if (text !== undefined) $('exec-text').value = text;
+      if (mission) $('exec-mission').value = mission;
+      if (seed !== undefined) $('exec-seed').value = String(seed);
+      if (go) start();
+    },
+    setMissions(missions) {
+      const select = $('exec-mission');
+      const keep = select.value;
+      select.replaceChildren(...missions.map((m) => el('option', { value: m.name, text: `${m.name} — ${m.title}` })));
+      if (missions.some((m) => m.name === keep)) select.value = keep;
+    },
+    shown() { graph.resize(); graph.fit(undefined, 15); dirty = true; },
+    get run() { return run; },
+    get tick() { return tick; },
+    selectRobot(i) { selected = i; dirty = true; },
+    seek(t) { setPlaying(false); tick = t; dirty = true; },
+  };
+}

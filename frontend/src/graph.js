@@ -1,0 +1,156 @@
+// Control software drawn with cytoscape: a MODEL (see src/web/API.md) becomes nodes and edges,
+// laid out by dagre. Used by the editor and, read-only, by Exec and the design monitor.
+import cytoscape from 'cytoscape';
+import dagre from 'cytoscape-dagre';
+import edgehandles from 'cytoscape-edgehandles';
+import { findModule, twoDigits } from './catalogue.js';
+
+cytoscape.use(dagre);
+cytoscape.use(edgehandles);
+
+const BT_SYMBOL = { selector: '?', 'selector*': '?*', sequence: '→', 'sequence*': '→*', negation: '!' };
+
+function paramsText(parameters) {
+  return Object.entries(parameters || {}).map(([k, v]) => `${k}=${v}`).join(' ');
+}
+
+function moduleText(kind, module) {
+  const spec = findModule(kind, module.id);
+  return `${twoDigits(module.id)} ${spec ? spec.name : '?'}`;
+}
+
+/// Cytoscape elements of a MODEL.
+export function elementsOf(model) {
+  const els = [];
+  if (!model) return els;
+  if (model.architecture === 'fsm') {
+    model.states.forEach((state, i) => {
+      const p = paramsText(state.behaviour.parameters);
+      els.push({
+        group: 'nodes',
+        data: { id: `s${i}`, index: i, kind: 'state', base: `S${i}: ${moduleText('behaviour', state.behaviour)}${p ? `\n${p}` : ''}` },
+        classes: i === 0 ? 'state initial' : 'state',
+      });
+    });
+    model.states.forEach((state, i) => {
+      state.transitions.forEach((t, j) => {
+        const p = paramsText(t.condition.parameters);
+        els.push({
+          group: 'edges',
+          data: { id: `t${i}_${j}`, source: `s${i}`, target: `s${t.target}`, state: i, transition: j, kind: 'transition',
+                  label: `${moduleText('condition', t.condition)}${p ? `\n${p}` : ''}` },
+        });
+      });
+    });
+  } else if (model.architecture === 'bt') {
+    model.nodes.forEach((node, i) => {
+      let base;
+      let cls = 'bt';
+      if (node.type === 'action') {
+        const p = paramsText(node.module.parameters);
+        base = `${moduleText('behaviour', node.module)}${p ? `\n${p}` : ''}`;
+        cls += ' action';
+      } else if (node.type === 'condition') {
+        const p = paramsText(node.module.parameters);
+        base = `${moduleText('condition', node.module)}${p ? `\n${p}` : ''}`;
+        cls += ' condition';
+      } else {
+        base = BT_SYMBOL[node.type] || node.type;
+        cls += ' composite';
+      }
+      if (i === 0) cls += ' root';
+      els.push({ group: 'nodes', data: { id: `n${i}`, index: i, kind: 'btnode', type: node.type, base }, classes: cls });
+    });
+    model.nodes.forEach((node, i) => {
+      (node.children || []).forEach((c, k) => {
+        els.push({ group: 'edges', data: { id: `e${i}_${c}`, source: `n${i}`, target: `n${c}`, order: k, kind: 'child', label: '' } });
+      });
+    });
+  }
+  return els;
+}
+
+const nodeLabel = (n) => (n.data('count') !== undefined ? `${n.data('base')}\n● ${n.data('count')} robots` : n.data('base'));
+// Node boxes sized from their label (about 6.5 px per character at font size 11).
+const labelWidth = (n) => Math.max(...nodeLabel(n).split('\n').map((l) => l.length)) * 6.5 + 4;
+const labelHeight = (n) => nodeLabel(n).split('\n').length * 14;
+
+const STYLE = [
+  { selector: 'node', style: {
+    label: nodeLabel,
+    'text-wrap': 'wrap', 'text-valign': 'center', 'text-halign': 'center', 'font-size': 11,
+    'font-family': 'system-ui, sans-serif', width: labelWidth, height: labelHeight, padding: 10,
+    shape: 'round-rectangle', 'background-color': '#e3edff', 'border-width': 1.5, 'border-color': '#5b7fc7', color: '#1d2430',
+  } },
+  { selector: 'node.initial', style: { 'border-width': 4, 'border-style': 'double', 'border-color': '#1b4fb8' } },
+  { selector: 'node.bt.composite', style: { shape: 'round-rectangle', 'background-color': '#eef1f5', 'border-color': '#6b7584', 'font-size': 16, 'font-weight': 700, width: 34, height: 28, padding: 4 } },
+  { selector: 'node.bt.condition', style: { shape: 'ellipse', 'background-color': '#fff1d6', 'border-color': '#c9962c', padding: 14 } },
+  { selector: 'node.bt.action', style: { 'background-color': '#e3edff' } },
+  { selector: 'node.bt.root', style: { 'border-width': 3 } },
+  { selector: 'node.busy', style: { 'background-color': '#c8f0cf', 'border-color': '#2e7d32' } },
+  { selector: 'node:selected', style: { 'border-color': '#e0a000', 'border-width': 3, 'overlay-opacity': 0 } },
+  { selector: 'edge', style: {
+    label: 'data(label)', 'curve-style': 'bezier', 'target-arrow-shape': 'triangle', 'arrow-scale': 1.2,
+    width: 1.8, 'line-color': '#8a94a3', 'target-arrow-color': '#8a94a3', 'font-size': 10, 'text-wrap': 'wrap',
+    'text-background-color': '#ffffff', 'text-background-opacity': 0.9, 'text-background-padding': 2, 'color': '#7a4d00',
+    'control-point-step-size': 60,
+  } },
+  { selector: 'edge[kind = "child"]', style: { 'curve-style': 'taxi', 'taxi-direction': 'downward', 'target-arrow-shape': 'none' } },
+  { selector: 'edge:selected', style: { 'line-color': '#e0a000', 'target-arrow-color': '#e0a000', width: 3 } },
+  { selector: '.eh-handle, .eh-ghost-node', style: { 'background-color': '#e0a000', width: 10, height: 10, shape: 'ellipse', label: '' } },
+  { selector: '.eh-preview, .eh-ghost-edge', style: { 'line-color': '#e0a000', 'target-arrow-color': '#e0a000', 'line-style': 'dashed', label: '' } },
+];
+
+export function createGraph(container, { readOnly = false } = {}) {
+  const cy = cytoscape({
+    container, style: STYLE, minZoom: 0.2, maxZoom: 3,
+    autoungrabify: readOnly, boxSelectionEnabled: false,
+    selectionType: 'single',
+  });
+  return cy;
+}
+
+function layoutOptions(model) {
+  return model && model.architecture === 'bt'
+    ? { name: 'dagre', rankDir: 'TB', nodeSep: 30, rankSep: 60, fit: true, padding: 20, animate: false }
+    : { name: 'dagre', rankDir: 'LR', nodeSep: 70, rankSep: 140, edgeSep: 30, fit: true, padding: 30, animate: false };
+}
+
+/// Replaces the drawing by the MODEL's. Positions of nodes that keep their id are kept unless
+/// relayout; new nodes trigger a layout.
+export function renderModel(cy, model, { relayout = false } = {}) {
+  const positions = new Map();
+  cy.nodes().forEach((n) => positions.set(n.id(), { ...n.position() }));
+  const selected = cy.$(':selected').map((e) => e.id());
+  cy.batch(() => {
+    cy.elements().remove();
+    cy.add(elementsOf(model));
+  });
+  const known = cy.nodes().every((n) => positions.has(n.id()));
+  if (!relayout && known && cy.nodes().length) {
+    cy.nodes().forEach((n) => n.position(positions.get(n.id())));
+  } else if (cy.nodes().length) {
+    layout(cy, model);
+  }
+  for (const id of selected) cy.getElementById(id).select();
+}
+
+export function layout(cy, model) {
+  const lay = cy.layout(layoutOptions(model));
+  lay.run();
+  if (cy.zoom() > 1.6) { cy.zoom(1.6); cy.center(); }
+}
+
+/// counts: array indexed by state / node index, or null to hide the badges.
+export function setCounts(cy, counts) {
+  cy.batch(() => {
+    cy.nodes().forEach((n) => {
+      const index = n.data('index');
+      if (!counts) { n.removeData('count'); n.removeClass('busy'); return; }
+      const c = counts[index] || 0;
+      if (n.data('kind') === 'btnode' && !(n.data('type') === 'action' || c > 0)) { n.removeData('count'); n.removeClass('busy'); return; }
+      if (n.data('count') !== c) n.data('count', c);
+      n.toggleClass('busy', c > 0);
+    });
+  });
+}

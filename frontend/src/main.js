@@ -1,0 +1,72 @@
+// Entry point: session check, sign-in, tabs; each tab lives in its own module.
+import './style.css';
+import { api, setCsrf, whenUnauthorized } from './api.js';
+import { loadCatalogue } from './catalogue.js';
+import { DEFAULT_TEXT, initEditor } from './editor.js';
+import { initExec } from './exec.js';
+import { renderMissions } from './missions.js';
+import { initMonitor } from './monitor.js';
+import { showSignIn } from './signin.js';
+import { showError } from './toast.js';
+
+const $ = (id) => document.getElementById(id);
+let started = false;
+let parts = null;
+let missions = [];
+
+function showTab(name) {
+  for (const page of document.querySelectorAll('[data-page]')) page.hidden = page.dataset.page !== name;
+  for (const tab of document.querySelectorAll('.tab')) tab.classList.toggle('active', tab.dataset.tab === name);
+  if (history.replaceState) history.replaceState(null, '', `#${name}`);
+  if (!parts) return;
+  if (name === 'editor') { parts.editor.resize(); parts.editor.refreshProjects(); }
+  if (name === 'exec') parts.exec.shown();
+  if (name === 'designs') parts.monitor.shown(); else parts.monitor.hidden();
+}
+
+async function startApp(user) {
+  $('user-name').textContent = user;
+  $('signin').hidden = true;
+  $('app').hidden = false;
+  if (started) return;
+  started = true;
+  await loadCatalogue();
+  const exec = initExec();
+  const editor = initEditor({ onExec: (text) => { exec.prepare({ text }); showTab('exec'); } });
+  const monitor = initMonitor({
+    missions: () => missions,
+    onWatch: (text, mission) => { showTab('exec'); exec.prepare({ text, mission, seed: 1, go: true }); },
+  });
+  parts = { editor, exec, monitor };
+  window.__sd = parts; // for the end-to-end tests and the curious
+  for (const tab of document.querySelectorAll('.tab')) tab.addEventListener('click', () => showTab(tab.dataset.tab));
+  missions = await api('/api/missions');
+  exec.setMissions(missions);
+  monitor.setMissions(missions);
+  renderMissions($('mission-grid'), missions, (name) => { exec.prepare({ mission: name, text: $('exec-text').value || editor.current.text }); showTab('exec'); });
+  exec.prepare({ text: DEFAULT_TEXT, mission: 'aac', seed: 1 });
+  const wanted = (location.hash || '#editor').slice(1);
+  showTab(['editor', 'exec', 'designs', 'missions'].includes(wanted) ? wanted : 'editor');
+  await editor.load(DEFAULT_TEXT);
+  document.body.dataset.ready = 'true';
+}
+
+$('signout').addEventListener('click', async () => {
+  try { await api('/api/sign-out', { body: {} }); } catch { /* signed out anyway */ }
+  setCsrf(null);
+  location.hash = '';
+  location.reload();
+});
+
+whenUnauthorized(() => showSignIn(startApp));
+
+(async () => {
+  try {
+    const session = await api('/api/session', { quiet: true });
+    setCsrf(session.csrf);
+    await startApp(session.user);
+  } catch (e) {
+    if (e.status === 401 || e.status === 0) showSignIn(startApp);
+    else showError(e.message);
+  }
+})();

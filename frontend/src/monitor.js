@@ -1,0 +1,161 @@
+// The Designs tab: the user's projects, start / stop a design, and its live status (polled):
+// runs used against the budget, iteration, configurations alive, elites, convergence, best drawn.
+import { api } from './api.js';
+import { createGraph, renderModel } from './graph.js';
+import { linePlot } from './plot.js';
+import { el } from './properties.js';
+
+const $ = (id) => document.getElementById(id);
+
+export function initMonitor({ onWatch, missions }) {
+  let selected = null;
+  let timer = null;
+  let status = null;
+  let bestDrawn = null;
+  let plot = null;
+  let visible = false;
+  let fastUntil = 0;
+  const graph = createGraph($('best-graph'), { readOnly: true });
+
+  const directionOf = (mission) => (missions().find((m) => m.name === mission) || {}).direction || 'maximize';
+
+  async function refreshProjects() {
+    const answer = await api('/api/projects');
+    const projects = Array.isArray(answer) ? answer : answer.projects || [];
+    const list = $('project-list');
+    list.replaceChildren(...projects.map((p) => el('li', {
+      class: p.name === selected ? 'selected' : '', testid: `project-${p.name}`,
+      onclick: () => select(p.name),
+    }, el('span', { text: p.name }), el('span', { class: 'muted small', text: `${p.mission || 'no mission'} · ${p.budget ?? '–'}` }))));
+    if (!projects.length) list.append(el('li', { class: 'muted small', text: 'no project yet' }));
+    if (!selected && projects.length) select(projects[0].name);
+    return projects;
+  }
+
+  function select(name) {
+    selected = name;
+    status = null;
+    bestDrawn = null;
+    $('monitor-project').textContent = name;
+    for (const li of $('project-list').children) li.classList.toggle('selected', li.dataset.testid === `project-${name}`);
+    graph.elements().remove();
+    poll();
+    refreshDesigns();
+  }
+
+  async function refreshDesigns() {
+    if (!selected) return;
+    const rows = await api(`/api/projects/${encodeURIComponent(selected)}/designs`).catch(() => []);
+    $('design-list').replaceChildren(...rows.map((d) => el('li', {},
+      el('span', { text: `#${d.id} ${d.state}` }),
+      el('span', { class: 'muted', text: `${d.mission} · ${d.budget}${d.best_score !== null && d.best_score !== undefined ? ` · best ${d.best_score}` : ''}` }))));
+  }
+
+  function lastRace(s) { return s.race_log && s.race_log.length ? s.race_log[s.race_log.length - 1] : null; }
+
+  function renderStatus(s) {
+    const design = s.design;
+    const progress = s.progress || {};
+    if (!design) {
+      for (const id of ['runs-used', 'iteration', 'alive', 'design-state']) $(id).textContent = '–';
+      $('design-state').textContent = 'no design yet';
+      return;
+    }
+    $('runs-used').textContent = `${progress.experiments_used ?? 0} / ${design.budget}`;
+    $('iteration').textContent = progress.total_iterations ? `${progress.iteration} / ${progress.total_iterations}` : String(progress.iteration ?? '–');
+    const race = lastRace(s);
+    const alive = race ? race.configurations.filter((c) => c.eliminated_after === null || c.eliminated_after === undefined).length : progress.race_configurations;
+    $('alive').textContent = alive === undefined ? '–' : String(alive);
+    $('design-state').textContent = `${design.state}${s.running_here ? ' (here)' : ''}${progress.finish_reason ? ` · ${progress.finish_reason}` : ''}`;
+    $('design-start').disabled = design.state === 'running';
+    $('design-stop').disabled = design.state !== 'running';
+
+    const maximise = directionOf(design.mission) !== 'minimize';
+    const better = (a, b) => (maximise ? a > b : a < b);
+    // Elites of the last race, best first.
+    const elites = race ? race.configurations.filter((c) => c.elite) : [];
+    elites.sort((a, b) => (maximise ? b.mean_score - a.mean_score : a.mean_score - b.mean_score));
+    $('elites').tBodies[0].replaceChildren(...elites.map((c) => el('tr', {},
+      el('td', { text: String(c.id) }), el('td', { text: String(c.mean_score) }), el('td', { text: String(c.runs) }),
+      el('td', { class: 'conf', text: c.configuration }))));
+    // Convergence: the best elite's mean score per iteration.
+    const xs = [];
+    const ys = [];
+    for (const r of s.race_log || []) {
+      let best = null;
+      for (const c of r.configurations) if (c.elite && (best === null || better(c.mean_score, best))) best = c.mean_score;
+      if (best !== null) { xs.push(r.iteration); ys.push(best); }
+    }
+    if (!plot) plot = linePlot($('convergence-plot'), { xLabel: 'iteration', yLabel: 'best elite mean score', height: 200, points: true });
+    plot.setData(xs, ys);
+
+    const best = (progress.best && progress.best.configuration) || design.best_configuration;
+    const score = (progress.best && progress.best.mean_score) ?? design.best_score;
+    $('best-score').textContent = best ? `mean score ${score} (${directionOf(design.mission)})` : 'no configuration yet';
+    $('watch-best').disabled = !best;
+    $('watch-best').dataset.text = best || '';
+    $('watch-best').dataset.mission = design.mission || '';
+    if (best && best !== bestDrawn) {
+      bestDrawn = best;
+      api('/api/parse', { body: { text: best }, quiet: true })
+        .then((answer) => { if (bestDrawn === best) { renderModel(graph, answer.software, { relayout: true }); graph.fit(undefined, 10); } })
+        .catch(() => {});
+    }
+  }
+
+  async function poll() {
+    clearTimeout(timer);
+    if (!selected) return;
+    const name = selected;
+    let running = false;
+    try {
+      const s = await api(`/api/projects/${encodeURIComponent(name)}/status`, { quiet: true });
+      if (name !== selected) return;
+      const was = status && status.design && status.design.state;
+      status = s;
+      renderStatus(s);
+      running = !!(s.design && s.design.state === 'running');
+      if (s.design && was && was !== s.design.state) refreshDesigns();
+    } catch (e) {
+      $('design-state').textContent = e.message;
+    }
+    if (visible || running) timer = setTimeout(poll, running || Date.now() < fastUntil ? 1000 : 5000);
+  }
+
+  $('project-form').addEventListener('submit', async (e) => {
+    e.preventDefault();
+    const name = $('project-name').value.trim();
+    const body = { name, mission: $('project-mission').value, budget: Number($('project-budget').value) };
+    await api('/api/projects', { body });
+    $('project-name').value = '';
+    selected = null;
+    await refreshProjects();
+    select(name);
+  });
+  $('design-start').addEventListener('click', async () => {
+    if (!selected) return;
+    await api(`/api/projects/${encodeURIComponent(selected)}/designs`, { body: {} });
+    fastUntil = Date.now() + 10000;
+    refreshDesigns();
+    poll();
+  });
+  $('design-stop').addEventListener('click', async () => {
+    if (!selected) return;
+    await api(`/api/projects/${encodeURIComponent(selected)}/designs/stop`, { body: {} });
+    fastUntil = Date.now() + 10000;
+    poll();
+  });
+  $('watch-best').addEventListener('click', () => {
+    const b = $('watch-best');
+    if (b.dataset.text) onWatch(b.dataset.text, b.dataset.mission);
+  });
+
+  return {
+    setMissions(list) {
+      $('project-mission').replaceChildren(...list.map((m) => el('option', { value: m.name, text: `${m.name} — ${m.title}` })));
+    },
+    shown() { visible = true; refreshProjects().catch(() => {}); graph.resize(); },
+    hidden() { visible = false; },
+    select,
+  };
+}
