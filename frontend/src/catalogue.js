@@ -32,7 +32,7 @@ export function parameterActive(spec, values) {
 
 export function defaultValue(spec) {
   if (spec.type === 'categorical') return spec.values[0];
-  if (spec.type === 'integer') return Math.round((spec.min + spec.max) / 2);
+  if (spec.type === 'integer') return Math.floor((spec.min + spec.max) / 2);
   return Math.round(((spec.min + spec.max) / 2) * 100) / 100;
 }
 

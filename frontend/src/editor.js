@@ -47,6 +47,7 @@ export function initEditor({ onExec }) {
     const mode = ctx.mode();
     $('mode-fsm').classList.toggle('on', mode === 'fsm');
     $('mode-bt').classList.toggle('on', mode === 'bt');
+    for (const g of document.querySelectorAll('#palette details')) if (mode === 'bt' && g.dataset.flavour === 'maple') g.open = true;
     $('draw-transitions').hidden = mode !== 'fsm';
     for (const id of ['bt-add-selector', 'bt-add-sequence', 'bt-maple']) $(id).hidden = mode !== 'bt';
     $('undo').disabled = !history.canUndo();
@@ -185,8 +186,10 @@ export function initEditor({ onExec }) {
   $('software-save').addEventListener('click', async () => {
     const name = $('software-name').value.trim();
     if (!projectSelect.value || !name) { showError('choose a project and a name'); return; }
-    await api(`/api/projects/${encodeURIComponent(projectSelect.value)}/software`, { body: { name, text: current.text } });
-    await refreshSoftware();
+    try {
+      await api(`/api/projects/${encodeURIComponent(projectSelect.value)}/software`, { body: { name, text: current.text } });
+      await refreshSoftware();
+    } catch { /* shown */ }
   });
 
   updateChrome();

@@ -134,7 +134,7 @@ export function initExec() {
         viewer.onready = () => { dirty = true; };
         timeline.max = String(r.ticks);
         renderModel(graph, r.scene.software, { relayout: true });
-        if (!plot) plot = linePlot($('objective-plot'), { xLabel: 'time (s)', yLabel: `objective (${r.scene.mission.objective || ''})`, height: 160 });
+        if (!plot) plot = linePlot($('objective-plot'), { xLabel: 'time (s)', yLabel: 'objective', height: 160 });
         $('exec-status').textContent = `run ${answer.id}: ${r.scene.mission.name}, seed ${r.scene.seed}, ${r.robots} robots`;
         setPlaying(true);
         dirty = true;
@@ -198,6 +198,7 @@ export function initExec() {
       if (missions.some((m) => m.name === keep)) select.value = keep;
     },
     shown() { graph.resize(); graph.fit(undefined, 15); dirty = true; },
+    graph,
     get run() { return run; },
     get tick() { return tick; },
     selectRobot(i) { selected = i; dirty = true; },

@@ -135,9 +135,28 @@ export function renderModel(cy, model, { relayout = false } = {}) {
   for (const id of selected) cy.getElementById(id).select();
 }
 
+/// dagre does not keep the order of children: put each node's children left to right in
+/// their order, moving whole subtrees, from the root down.
+function orderTree(cy, model) {
+  const shift = (i, dx) => {
+    const n = cy.getElementById(`n${i}`);
+    n.position({ x: n.position('x') + dx, y: n.position('y') });
+    for (const c of model.nodes[i].children || []) shift(c, dx);
+  };
+  const visit = (i) => {
+    const children = model.nodes[i].children || [];
+    const slots = children.map((c) => cy.getElementById(`n${c}`).position('x')).sort((a, b) => a - b);
+    children.forEach((c, k) => shift(c, slots[k] - cy.getElementById(`n${c}`).position('x')));
+    children.forEach(visit);
+  };
+  if (model.nodes.length) visit(0);
+}
+
 export function layout(cy, model) {
-  const lay = cy.layout(layoutOptions(model));
+  const lay = cy.layout({ ...layoutOptions(model), fit: false });
   lay.run();
+  if (model && model.architecture === 'bt') orderTree(cy, model);
+  cy.fit(undefined, 30);
   if (cy.zoom() > 1.6) { cy.zoom(1.6); cy.center(); }
 }
 

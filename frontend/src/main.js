@@ -39,6 +39,7 @@ async function startApp(user) {
   });
   parts = { editor, exec, monitor };
   window.__sd = parts; // for the end-to-end tests and the curious
+  window.__sd.execCounts = () => exec.graph.nodes().reduce((sum, n) => sum + (n.data('count') || 0), 0);
   for (const tab of document.querySelectorAll('.tab')) tab.addEventListener('click', () => showTab(tab.dataset.tab));
   missions = await api('/api/missions');
   exec.setMissions(missions);

@@ -86,7 +86,7 @@ export function initMonitor({ onWatch, missions }) {
       for (const c of r.configurations) if (c.elite && (best === null || better(c.mean_score, best))) best = c.mean_score;
       if (best !== null) { xs.push(r.iteration); ys.push(best); }
     }
-    if (!plot) plot = linePlot($('convergence-plot'), { xLabel: 'iteration', yLabel: 'best elite mean score', height: 200, points: true });
+    if (!plot) plot = linePlot($('convergence-plot'), { xLabel: 'iteration', yLabel: 'best mean score', height: 200, points: true });
     plot.setData(xs, ys);
 
     const best = (progress.best && progress.best.configuration) || design.best_configuration;
@@ -126,7 +126,7 @@ export function initMonitor({ onWatch, missions }) {
     e.preventDefault();
     const name = $('project-name').value.trim();
     const body = { name, mission: $('project-mission').value, budget: Number($('project-budget').value) };
-    await api('/api/projects', { body });
+    try { await api('/api/projects', { body }); } catch { return; }
     $('project-name').value = '';
     selected = null;
     await refreshProjects();
@@ -134,14 +134,14 @@ export function initMonitor({ onWatch, missions }) {
   });
   $('design-start').addEventListener('click', async () => {
     if (!selected) return;
-    await api(`/api/projects/${encodeURIComponent(selected)}/designs`, { body: {} });
+    try { await api(`/api/projects/${encodeURIComponent(selected)}/designs`, { body: {} }); } catch { return; }
     fastUntil = Date.now() + 10000;
     refreshDesigns();
     poll();
   });
   $('design-stop').addEventListener('click', async () => {
     if (!selected) return;
-    await api(`/api/projects/${encodeURIComponent(selected)}/designs/stop`, { body: {} });
+    try { await api(`/api/projects/${encodeURIComponent(selected)}/designs/stop`, { body: {} }); } catch { /* shown */ }
     fastUntil = Date.now() + 10000;
     poll();
   });

@@ -1,0 +1,134 @@
+// The editor and Exec, driven in headless chromium against the real server:
+// sign in; paste an FSM and see it drawn; edit a parameter in the drawing and see the string
+// change; a malformed string shows an inline error naming the token; Exec AAC with seed 3 moves
+// the robots and ends on the score that `swarmdesign evaluate` prints.
+import assert from 'node:assert/strict';
+import { after, before, test } from 'node:test';
+import { cli, launchBrowser, newPage, screenshotter, signIn, startServer } from './helpers.mjs';
+
+const FSM = '--fsm-config --nstates 2 --s0 0 --rwm0 50 --n0 1 --n0x0 0 --c0x0 0 --p0x0 0.5 --s1 1 --n1 1 --n1x0 0 --c1x0 1 --p1x0 0.5';
+let server;
+let browser;
+let page;
+const errors = [];
+const shot = screenshotter('editor-exec');
+
+before(async () => {
+  server = await startServer({ users: [{ name: 'alice' }] });
+  browser = await launchBrowser();
+  page = await newPage(browser, errors);
+}, { timeout: 60000 });
+
+after(async () => {
+  if (browser) await browser.close();
+  if (server) await server.close();
+});
+
+const nodeCount = () => page.evaluate(() => window.__sd.editor.cy.nodes().length);
+const configText = () => page.inputValue('#config-text');
+
+test('a wrong password is refused, the right one signs in', { timeout: 30000 }, async () => {
+  await page.goto(server.url);
+  await page.waitForSelector('#signin-form', { state: 'visible' });
+  await page.fill('#signin-name', 'alice');
+  await page.fill('#signin-password', 'not-the-password');
+  await page.click('#signin-submit');
+  await page.waitForSelector('#signin-error', { state: 'visible' });
+  await shot(page, 'signin-refused');
+  await signIn(page, server.url, 'alice');
+  assert.equal(await page.textContent('#user-name'), 'alice');
+  await shot(page, 'signed-in');
+});
+
+test('the palette lists the modules of the five flavours with two-digit ids', { timeout: 15000 }, async () => {
+  const flavours = await page.$$eval('#palette details', (els) => els.map((e) => e.dataset.flavour));
+  assert.deepEqual(flavours, ['chocolate', 'tuttifrutti', 'coconut', 'maple', 'arlequin']);
+  assert.ok(await page.$('[data-testid="palette-behaviour-10"]'));
+  assert.ok(await page.$('[data-testid="palette-condition-27"]'));
+});
+
+test('a pasted FSM string is drawn', { timeout: 20000 }, async () => {
+  await page.fill('#config-text', FSM);
+  await page.waitForFunction(() => window.__sd.editor.cy.nodes().length === 2 && window.__sd.editor.cy.edges().length === 2);
+  const labels = await page.evaluate(() => window.__sd.editor.cy.nodes().map((n) => n.data('base')));
+  assert.match(labels[0], /10 Exploration/);
+  assert.match(labels[1], /11 Stop/);
+  assert.ok(await page.evaluate(() => window.__sd.editor.cy.getElementById('s0').hasClass('initial')));
+  await page.click('#graph', { position: { x: 5, y: 5 } }); // leave the text box: the canonical string appears
+  await page.waitForFunction(() => document.getElementById('config-text').value.includes('--s0 10'));
+  await shot(page, 'fsm-drawn');
+});
+
+test('changing rwm in the drawing changes the string', { timeout: 20000 }, async () => {
+  // Click state 0 where cytoscape draws it.
+  const box = await page.locator('#graph').boundingBox();
+  const at = await page.evaluate(() => window.__sd.editor.cy.getElementById('s0').renderedPosition());
+  await page.mouse.click(box.x + at.x, box.y + at.y);
+  await page.waitForSelector('#param-rwm');
+  await page.fill('#param-rwm', '77');
+  await page.press('#param-rwm', 'Enter');
+  await page.waitForFunction(() => document.getElementById('config-text').value.includes('--rwm0 77'));
+  assert.equal(await nodeCount(), 2);
+  await shot(page, 'rwm-changed');
+  // Undo brings the old string back; redo the new one.
+  await page.click('#undo');
+  await page.waitForFunction(() => document.getElementById('config-text').value.includes('--rwm0 50'));
+  await page.click('#redo');
+  await page.waitForFunction(() => document.getElementById('config-text').value.includes('--rwm0 77'));
+});
+
+test('a malformed string shows an inline error naming the token; the app keeps working', { timeout: 20000 }, async () => {
+  await page.fill('#config-text', '--fsm-config --nstates 2 --s0 10 --rwm0 500 --n0 0 --s1 11 --n1 0');
+  await page.waitForSelector('#config-error', { state: 'visible' });
+  const message = await page.textContent('#config-error');
+  assert.match(message, /rwm0/);
+  assert.equal(await nodeCount(), 2, 'the last good drawing stays');
+  await shot(page, 'parse-error');
+  await page.fill('#config-text', '--fsm-config --nstates 3 --s0 10 --rwm0 20 --n0 0 --s1 11 --n1 0 --s2 12 --n2 0');
+  await page.waitForFunction(() => window.__sd.editor.cy.nodes().length === 3);
+  await page.waitForSelector('#config-error', { state: 'hidden' });
+  await shot(page, 'good-again');
+});
+
+test('Exec AAC with seed 3: robots move and the final score equals evaluate', { timeout: 60000 }, async () => {
+  const expected = JSON.parse(cli(server.env, ['evaluate', '--mission', 'aac', '--seed', '3', '--json', ...FSM.split(' ')])).runs[0].score;
+  await page.click('#tab-exec');
+  await page.fill('#exec-text', FSM);
+  await page.selectOption('#exec-mission', 'aac');
+  await page.fill('#exec-seed', '3');
+  await page.click('#exec-run');
+  await page.waitForFunction(() => window.__sd.exec.run && window.__sd.exec.run.received > 50, null, { timeout: 30000 });
+  await shot(page, 'exec-running');
+  const moved = await page.evaluate(() => {
+    const r = window.__sd.exec.run;
+    let differ = 0;
+    for (let i = 0; i < r.robots; i++) if (r.x[i] !== r.x[50 * r.robots + i] || r.y[i] !== r.y[50 * r.robots + i]) differ += 1;
+    return differ;
+  });
+  assert.ok(moved > 0, 'robots move between tick 0 and tick 50');
+  await page.waitForFunction(() => document.getElementById('final-score').textContent !== '', null, { timeout: 40000 });
+  const shown = await page.textContent('#final-score');
+  assert.equal(Number(shown), expected, `final score ${shown} equals evaluate's ${expected}`);
+  // Scrub to the end, click a robot and see its state; the FSM shows how many robots are where.
+  await page.evaluate(() => window.__sd.exec.seek(window.__sd.exec.run.received - 1));
+  await page.check('#show-trails');
+  await page.check('#show-links');
+  const where = await page.evaluate(() => {
+    const r = window.__sd.exec.run;
+    const t = r.received - 1;
+    const svg = r.scene.svg.match(/viewBox="([^"]+)"/)[1].split(/\s+/).map(Number);
+    return { x: r.x[t * r.robots], y: r.y[t * r.robots], svg };
+  });
+  const box = await page.locator('#viewer').boundingBox();
+  const [vx, vy, vw, vh] = where.svg;
+  await page.mouse.click(box.x + ((where.x - vx) / vw) * box.width, box.y + ((-where.y - vy) / vh) * box.height);
+  await page.waitForSelector('#robot-state');
+  assert.match(await page.textContent('#robot-state'), /state [01]: 1[01] (Exploration|Stop)/);
+  const total = await page.evaluate(() => window.__sd.exec.run && window.__sd.execCounts());
+  assert.equal(total, 20, 'the state badges count every robot');
+  await shot(page, 'exec-final');
+});
+
+test('the page raised no uncaught error', () => {
+  assert.deepEqual(errors, []);
+});
