@@ -46,6 +46,7 @@ export async function startServer({ users = [] } = {}) {
     cli(env, ['sign-in', user.name, '--password-stdin'], `${PASSWORD}\n`);
     for (const p of user.projects || []) {
       cli(env, ['new-project', p.name]);
+      cli(env, ['select-project', p.name]);
       if (p.mission) cli(env, ['set-mission', p.mission]);
       if (p.budget) cli(env, ['set-budget', String(p.budget)]);
     }

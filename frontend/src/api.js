@@ -4,7 +4,7 @@ import { showError } from './toast.js';
 let csrf = null;
 let onUnauthorized = () => {};
 
-export function setCsrf(token) { csrf = token; }
+export function setCsrf(token) { csrf = token; window.__sdCsrf = token; }
 export function whenUnauthorized(handler) { onUnauthorized = handler; }
 
 export class ApiError extends Error {

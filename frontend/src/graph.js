@@ -107,13 +107,15 @@ export function createGraph(container, { readOnly = false } = {}) {
     autoungrabify: readOnly, boxSelectionEnabled: false,
     selectionType: 'single',
   });
+  cy.scratch('_sdCompact', readOnly); // narrow side panels: FSMs top to bottom
   return cy;
 }
 
-function layoutOptions(model) {
-  return model && model.architecture === 'bt'
-    ? { name: 'dagre', rankDir: 'TB', nodeSep: 30, rankSep: 60, fit: true, padding: 20, animate: false }
-    : { name: 'dagre', rankDir: 'LR', nodeSep: 70, rankSep: 140, edgeSep: 30, fit: true, padding: 30, animate: false };
+function layoutOptions(cy, model) {
+  if (model && model.architecture === 'bt') return { name: 'dagre', rankDir: 'TB', nodeSep: 30, rankSep: 60, animate: false };
+  return cy.scratch('_sdCompact')
+    ? { name: 'dagre', rankDir: 'TB', nodeSep: 50, rankSep: 70, edgeSep: 20, animate: false }
+    : { name: 'dagre', rankDir: 'LR', nodeSep: 70, rankSep: 140, edgeSep: 30, animate: false };
 }
 
 /// Replaces the drawing by the MODEL's. Positions of nodes that keep their id are kept unless
@@ -153,10 +155,10 @@ function orderTree(cy, model) {
 }
 
 export function layout(cy, model) {
-  const lay = cy.layout({ ...layoutOptions(model), fit: false });
+  const lay = cy.layout({ ...layoutOptions(cy, model), fit: false });
   lay.run();
   if (model && model.architecture === 'bt') orderTree(cy, model);
-  cy.fit(undefined, 30);
+  cy.fit(undefined, cy.scratch('_sdCompact') ? 10 : 30);
   if (cy.zoom() > 1.6) { cy.zoom(1.6); cy.center(); }
 }
 

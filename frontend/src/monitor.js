@@ -57,8 +57,11 @@ export function initMonitor({ onWatch, missions }) {
     const design = s.design;
     const progress = s.progress || {};
     if (!design) {
-      for (const id of ['runs-used', 'iteration', 'alive', 'design-state']) $(id).textContent = '–';
+      for (const id of ['iteration', 'alive']) $(id).textContent = '–';
+      $('runs-used').textContent = s.budget ? `0 / ${s.budget}` : '–';
       $('design-state').textContent = 'no design yet';
+      $('design-start').disabled = false;
+      $('design-stop').disabled = true;
       return;
     }
     $('runs-used').textContent = `${progress.experiments_used ?? 0} / ${design.budget}`;
