@@ -1,7 +1,7 @@
 // Shared set-up of the end-to-end tests: a fresh SwarmDesign home with users and projects, the
 // real server (swarmdesign run-exp) on a free loopback port, Debian's chromium via playwright-core.
 import { execFileSync, spawn } from 'node:child_process';
-import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, readdirSync, rmSync } from 'node:fs';
 import net from 'node:net';
 import os from 'node:os';
 import path from 'node:path';
@@ -105,6 +105,7 @@ export async function newPage(browser, errors = []) {
 
 export function screenshotter(prefix) {
   mkdirSync(SCREENSHOTS, { recursive: true });
+  for (const f of readdirSync(SCREENSHOTS)) if (f.startsWith(`${prefix}-`)) rmSync(path.join(SCREENSHOTS, f));
   let n = 0;
   return (page, step) => page.screenshot({ path: path.join(SCREENSHOTS, `${prefix}-${String(++n).padStart(2, '0')}-${step}.png`) });
 }

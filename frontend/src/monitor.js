@@ -73,23 +73,23 @@ export function initMonitor({ onWatch, missions }) {
     $('design-start').disabled = design.state === 'running';
     $('design-stop').disabled = design.state !== 'running';
 
-    const maximise = directionOf(design.mission) !== 'minimize';
-    const better = (a, b) => (maximise ? a > b : a < b);
-    // Elites of the last race, best first.
-    const elites = race ? race.configurations.filter((c) => c.elite) : [];
-    elites.sort((a, b) => (maximise ? b.mean_score - a.mean_score : a.mean_score - b.mean_score));
+    // A race lists its elites (best first) once it is over; the race under way lists none yet.
+    const finished = (s.race_log || []).filter((r) => r.elites && r.elites.length);
+    const members = (r) => new Map(r.configurations.map((c) => [c.id, c]));
+    const latest = finished.length ? finished[finished.length - 1] : null;
+    const elites = latest ? latest.elites.map((id) => members(latest).get(id)).filter(Boolean) : [];
     $('elites').tBodies[0].replaceChildren(...elites.map((c) => el('tr', {},
-      el('td', { text: String(c.id) }), el('td', { text: String(c.mean_score) }), el('td', { text: String(c.runs) }),
+      el('td', { text: String(c.id) }), el('td', { text: String(Math.round(c.mean_score * 1000) / 1000) }), el('td', { text: String(c.runs) }),
       el('td', { class: 'conf', text: c.configuration }))));
-    // Convergence: the best elite's mean score per iteration.
+    $('elites').dataset.iteration = latest ? String(latest.iteration) : '';
+    // Convergence: the best elite's mean score at the end of each race.
     const xs = [];
     const ys = [];
-    for (const r of s.race_log || []) {
-      let best = null;
-      for (const c of r.configurations) if (c.elite && (best === null || better(c.mean_score, best))) best = c.mean_score;
-      if (best !== null) { xs.push(r.iteration); ys.push(best); }
+    for (const r of finished) {
+      const best = members(r).get(r.elites[0]);
+      if (best) { xs.push(r.iteration); ys.push(best.mean_score); }
     }
-    if (!plot) plot = linePlot($('convergence-plot'), { xLabel: 'iteration', yLabel: 'best mean score', height: 200, points: true });
+    if (!plot) plot = linePlot($('convergence-plot'), { xLabel: 'iteration', yLabel: 'best elite mean score', height: 200, points: true });
     plot.setData(xs, ys);
 
     const best = (progress.best && progress.best.configuration) || design.best_configuration;
