@@ -8,8 +8,12 @@ packages=(
   build-essential cmake ninja-build pkg-config git
   libcli11-dev nlohmann-json3-dev libsqlite3-dev libsodium-dev libboost-dev r-cran-irace
   libgtest-dev libgmock-dev libbenchmark-dev
+  libcpp-httplib-dev  # the web app's server (run-exp)
+  chromium  # the web app's browser tests (headless)
   jq  # bench/native_vs_irace.sh
 )
+# Node.js and npm bundle the web app's front end; a machine that has them already keeps its own.
+if ! command -v npm >/dev/null 2>&1; then packages+=(nodejs npm); fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -21,6 +25,12 @@ if ((${#missing[@]})); then
   echo "setup: installing ${missing[*]}"
   $sudo apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+# The front end's npm packages, exactly as frontend/package-lock.json pins them.
+if [ ! -f frontend/node_modules/.package-lock.json ] || [ frontend/package-lock.json -nt frontend/node_modules/.package-lock.json ]; then
+  echo "setup: installing the front end's npm packages"
+  (cd frontend && npm ci --no-audit --no-fund --loglevel=error)
 fi
 
 build_type="${SWARMDESIGN_BUILD_TYPE:-Release}"

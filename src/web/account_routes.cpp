@@ -24,7 +24,9 @@ void add_account_routes(Routes& routes) {
     std::string token;
     try {
       token = app::open_session(call.home, name, text_field(call.body, "password"));
-    } catch (const storage::AccessDenied&) {
+    } catch (const storage::AccessDenied&) {  // the same words for an unknown name: no user list for guessers
+      throw HttpError(401, "wrong user name or password");
+    } catch (const storage::NotFound&) {
       throw HttpError(401, "wrong user name or password");
     }
     call.response.set_header("Set-Cookie", SessionGuard::session_cookie(

@@ -1,0 +1,313 @@
+// The web server as a browser meets it, over loopback HTTP against the real server in this
+// process: every API route needs a session, every POST its CSRF token, users never reach each
+// other's projects, designs or runs, bad input gets a clear error and the server goes on, an
+// Exec scores exactly what `evaluate` scores, fifty viewers can watch one run, and a design
+// started from the page can be followed, stopped and resumed.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstring>
+#include <filesystem>
+#include <regex>
+#include <thread>
+#include <vector>
+
+#include "app/accounts.hpp"
+#include "app/evaluation_job.hpp"
+#include "control/config_string.hpp"
+#include "evaluation/simulation.hpp"
+#include "missions/catalogue.hpp"
+#include "web/web_client.hpp"
+#include "workflow/design_helpers.hpp"
+
+namespace sd::test {
+namespace {
+
+using nlohmann::json;
+
+const std::string kFsm =
+    "--fsm-config --nstates 2 --s0 0 --rwm0 50 --n0 1 --n0x0 0 --c0x0 0 --p0x0 0.5 --s1 1 --n1 1 --n1x0 0 --c1x0 1 "
+    "--p1x0 0.5";
+
+class WebServer : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    root_ = std::filesystem::temp_directory_path() /
+            ("sd-web-" + std::to_string(::getpid()) + "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::remove_all(root_);
+    std::filesystem::create_directories(root_);
+    {
+      app::Home home(root_ / "home");
+      app::sign_up(home, "alice", "alice-password");
+      app::sign_up(home, "bob", "bob-password");
+    }
+    server_.emplace(root_ / "home");
+    alice_.emplace(server_->port());
+    bob_.emplace(server_->port());
+    ASSERT_TRUE(alice_->sign_in("alice", "alice-password"));
+    ASSERT_TRUE(bob_->sign_in("bob", "bob-password"));
+  }
+  void TearDown() override {
+    alice_.reset();
+    bob_.reset();
+    server_.reset();
+    std::filesystem::remove_all(root_);
+  }
+
+  /// Alice's project on a 10-second AAC (a mission file of her own) with a small budget.
+  void alice_project(const std::string& name, const std::string& budget = "300") {
+    const auto mission = write_short_mission(root_);
+    const Answer a = alice_->post("/api/projects", {{"name", name}, {"mission", mission.string()}, {"budget", budget}});
+    ASSERT_EQ(a.status, 200) << a.text;
+  }
+
+  std::int64_t start_run(WebClient& client, const std::string& text, const std::string& mission, int seed) {
+    const Answer a = client.post("/api/runs", {{"text", text}, {"mission", mission}, {"seed", seed}});
+    EXPECT_EQ(a.status, 200) << a.text;
+    return a.status == 200 ? a.body.at("id").get<std::int64_t>() : -1;
+  }
+
+  std::filesystem::path root_;
+  std::optional<RunningServer> server_;
+  std::optional<WebClient> alice_, bob_;
+};
+
+/// The data of the stream's events named `event`, in order.
+std::vector<json> events(const std::string& stream, const std::string& event) {
+  std::vector<json> out;
+  const std::string head = "event: " + event + "\ndata: ";
+  for (std::size_t at = stream.find(head); at != std::string::npos; at = stream.find(head, at + 1)) {
+    const std::size_t start = at + head.size();
+    out.push_back(json::parse(stream.substr(start, stream.find('\n', start) - start)));
+  }
+  return out;
+}
+
+TEST_F(WebServer, EveryApiRouteAnswers401WithoutASession) {
+  WebClient stranger(server_->port());
+  const std::vector<std::string> gets = {"/api/session", "/api/catalogue", "/api/missions", "/api/missions/svg?name=aac",
+                                         "/api/runs/1/stream", "/api/projects", "/api/projects/p/status",
+                                         "/api/projects/p/designs", "/api/projects/p/software"};
+  for (const auto& path : gets) {
+    const Answer a = stranger.get(path);
+    EXPECT_EQ(a.status, 401) << "GET " << path;
+    EXPECT_TRUE(a.body.contains("error")) << a.text;
+  }
+  const std::vector<std::string> posts = {"/api/sign-out", "/api/parse", "/api/print", "/api/runs", "/api/projects",
+                                          "/api/projects/p/designs", "/api/projects/p/designs/stop",
+                                          "/api/projects/p/software"};
+  for (const auto& path : posts) EXPECT_EQ(stranger.post(path, {{"text", kFsm}}).status, 401) << "POST " << path;
+  // A forged or ended session is no session.
+  httplib::Headers forged{{"Cookie", "sd_session=0123456789abcdef"}};
+  EXPECT_EQ(stranger.raw().Get("/api/projects", forged)->status, 401);
+  ASSERT_EQ(alice_->post("/api/sign-out", json::object()).status, 200);
+  EXPECT_EQ(alice_->get("/api/projects").status, 401);
+}
+
+TEST_F(WebServer, TheSessionCookieIsHttpOnlyAndSameSiteStrict) {
+  const auto result = alice_->raw().Post("/api/sign-in", R"({"name":"alice","password":"alice-password"})", "application/json");
+  ASSERT_EQ(result->status, 200);
+  const std::string cookie = result->get_header_value("Set-Cookie");
+  EXPECT_NE(cookie.find("HttpOnly"), std::string::npos) << cookie;
+  EXPECT_NE(cookie.find("SameSite=Strict"), std::string::npos) << cookie;
+  EXPECT_EQ(alice_->raw().Post("/api/sign-in", R"({"name":"alice","password":"wrong-password"})", "application/json")->status,
+            401);
+  const auto unknown = alice_->raw().Post("/api/sign-in", R"({"name":"carol","password":"wrong-password"})", "application/json");
+  EXPECT_EQ(unknown->status, 401);
+  EXPECT_EQ(unknown->body.find("carol"), std::string::npos) << "the answer must not tell which names exist";
+}
+
+TEST_F(WebServer, APostWithoutTheCsrfTokenIsRefused) {
+  const Answer without = alice_->post("/api/parse", {{"text", kFsm}}, false);
+  EXPECT_EQ(without.status, 403);
+  EXPECT_NE(without.body.at("error").get<std::string>().find("X-CSRF-Token"), std::string::npos);
+  // Bob's token is not Alice's.
+  httplib::Headers mixed{{"Cookie", alice_->cookie()}, {"X-CSRF-Token", "0"}};
+  EXPECT_EQ(alice_->raw().Post("/api/parse", mixed, json{{"text", kFsm}}.dump(), "application/json")->status, 403);
+  // A form post (not JSON) is refused whatever it carries.
+  EXPECT_EQ(alice_->raw().Post("/api/sign-in", "name=alice&password=alice-password", "application/x-www-form-urlencoded")->status,
+            415);
+  EXPECT_EQ(alice_->post("/api/parse", {{"text", kFsm}}).status, 200);
+}
+
+TEST_F(WebServer, ASecondUserCanNeitherListNorWatchNorStopTheFirstUsersWork) {
+  alice_project("mine");
+  const std::int64_t run = start_run(*alice_, kFsm, "aac", 3);
+  ASSERT_EQ(alice_->post("/api/projects/mine/software", {{"name", "walker"}, {"text", kFsm}}).status, 200);
+
+  EXPECT_TRUE(bob_->get("/api/projects").body.empty());
+  EXPECT_EQ(bob_->get("/api/projects/mine/status").status, 404);
+  EXPECT_EQ(bob_->get("/api/projects/mine/designs").status, 404);
+  EXPECT_EQ(bob_->get("/api/projects/mine/software").status, 404);
+  EXPECT_EQ(bob_->post("/api/projects/mine/designs", json::object()).status, 404);
+  EXPECT_EQ(bob_->post("/api/projects/mine/designs/stop", json::object()).status, 404);
+  EXPECT_EQ(bob_->stream("/api/runs/" + std::to_string(run) + "/stream").status, 404);
+  // Alice's mission file is hers: Bob cannot run or draw it by path.
+  const std::string file = alice_->get("/api/projects").body.at(0).at("mission");
+  EXPECT_EQ(bob_->get("/api/missions/svg?name=" + file).status, 404);
+  EXPECT_EQ(bob_->post("/api/runs", {{"text", kFsm}, {"mission", file}, {"seed", 1}}).status, 404);
+  for (const json& m : bob_->get("/api/missions").body) EXPECT_NE(m.at("name"), file);
+
+  // Alice has all of it.
+  ASSERT_EQ(alice_->get("/api/projects").body.size(), 1u);
+  EXPECT_EQ(alice_->stream("/api/runs/" + std::to_string(run) + "/stream").status, 200);
+  EXPECT_EQ(alice_->get("/api/projects/mine/software").body.at(0).at("name"), "walker");
+  bool listed = false;
+  for (const json& m : alice_->get("/api/missions").body) listed = listed || m.at("name") == file;
+  EXPECT_TRUE(listed);
+}
+
+TEST_F(WebServer, BadInputGetsAClearErrorAndTheServerGoesOn) {
+  const Answer bad = alice_->post("/api/parse", {{"text", "--fsm-config --nstates 1 --s0 0 --rwmX 5"}});
+  EXPECT_EQ(bad.status, 400);
+  EXPECT_EQ(bad.body.at("token"), "--rwmX");
+  EXPECT_NE(bad.body.at("error").get<std::string>().find("--rwmX"), std::string::npos);
+
+  EXPECT_EQ(alice_->post("/api/runs", {{"text", "--fsm-config --nstates 9"}, {"mission", "aac"}, {"seed", 1}}).status, 400);
+  EXPECT_EQ(alice_->post("/api/runs", {{"text", kFsm}, {"mission", "no-such-mission"}, {"seed", 1}}).status, 400);
+  EXPECT_EQ(alice_->post("/api/runs", {{"text", kFsm}, {"mission", "aac"}, {"seed", "three"}}).status, 400);
+  EXPECT_EQ(alice_->post("/api/runs", {{"text", kFsm}, {"mission", "aac"}, {"seed", -4}}).status, 400);
+  EXPECT_EQ(alice_->post("/api/runs", {{"text", kFsm}, {"mission", "/etc/passwd"}, {"seed", 1}}).status, 404);
+  // A malformed mission file of her own project is refused when the project is made.
+  std::filesystem::create_directories(root_ / "missions");
+  std::ofstream(root_ / "missions" / "broken.json") << R"({"name": "broken", "duration": -3})";
+  const Answer broken =
+      alice_->post("/api/projects", {{"name", "p"}, {"mission", (root_ / "missions" / "broken.json").string()}, {"budget", "300"}});
+  EXPECT_EQ(broken.status, 400) << broken.text;
+  EXPECT_TRUE(alice_->get("/api/projects").body.empty()) << "a refused project must leave nothing behind";
+  EXPECT_EQ(alice_->post("/api/projects", {{"name", "p"}, {"mission", "aac"}, {"budget", "ten"}}).status, 400);
+  EXPECT_EQ(alice_->post("/api/print", {{"software", {{"architecture", "fsm"}, {"states", json::array()}}}}).status, 400);
+  EXPECT_EQ(alice_->post("/api/print", {{"software", {{"architecture", "fsm"},
+                                                       {"states", {{{"behaviour", {{"id", 99}}}}}}}}}).status,
+            400);
+
+  // Not JSON, and too large.
+  httplib::Headers h{{"Cookie", alice_->cookie()}, {"X-CSRF-Token", alice_->get("/api/session").body.at("csrf")}};
+  EXPECT_EQ(alice_->raw().Post("/api/parse", h, "{not json", "application/json")->status, 400);
+  const auto huge = alice_->raw().Post("/api/parse", h, std::string(2 << 20, ' '), "application/json");
+  ASSERT_TRUE(huge);
+  EXPECT_EQ(huge->status, 413);
+
+  // Still serving.
+  EXPECT_EQ(alice_->get("/api/session").status, 200);
+  EXPECT_EQ(alice_->post("/api/parse", {{"text", kFsm}}).status, 200);
+}
+
+TEST_F(WebServer, ParseAndPrintGoBothWaysThroughTheOneParser) {
+  const Answer parsed = alice_->post("/api/parse", {{"text", kFsm}});
+  ASSERT_EQ(parsed.status, 200);
+  json model = parsed.body.at("software");
+  EXPECT_EQ(model.at("states").size(), 2u);
+  EXPECT_EQ(parsed.body.at("text"), to_config_string(parse_control_software(kFsm)));
+  model["states"][0]["behaviour"]["parameters"]["rwm"] = 7;
+  const Answer printed = alice_->post("/api/print", {{"software", model}});
+  ASSERT_EQ(printed.status, 200) << printed.text;
+  EXPECT_NE(printed.body.at("text").get<std::string>().find("--rwm0 7"), std::string::npos);
+
+  const json catalogue = alice_->get("/api/catalogue").body;
+  EXPECT_EQ(catalogue.at("flavours").size(), 5u);
+  std::size_t behaviours = 0;
+  for (ModuleKind kind : {ModuleKind::Behaviour}) behaviours += modules(kind).size();
+  EXPECT_EQ(catalogue.at("behaviours").size(), behaviours);
+}
+
+TEST_F(WebServer, AnExecStreamsTheWholeRunAndScoresExactlyWhatEvaluateScores) {
+  const std::int64_t run = start_run(*alice_, kFsm, "aac", 3);
+  const Answer stream = alice_->stream("/api/runs/" + std::to_string(run) + "/stream");
+  ASSERT_EQ(stream.status, 200);
+  const auto scene = events(stream.text, "scene");
+  ASSERT_EQ(scene.size(), 1u);
+  EXPECT_EQ(scene[0].at("robots"), 20);
+  EXPECT_NE(scene[0].at("svg").get<std::string>().find("<svg"), std::string::npos);
+
+  const auto frames = events(stream.text, "frames");
+  int ticks = 0;
+  for (const json& f : frames) {
+    EXPECT_EQ(f.at("first"), ticks);
+    ticks += f.at("count").get<int>();
+    EXPECT_EQ(f.at("x").size(), 20u * f.at("count").get<std::size_t>());
+  }
+  EXPECT_EQ(ticks, 1201);  // placement and 1200 ticks
+  EXPECT_NE(frames.front().at("x").at(0), frames.back().at("x").at(0)) << "the robots moved";
+
+  const auto end = events(stream.text, "end");
+  ASSERT_EQ(end.size(), 1u);
+  const double streamed = end[0].at("score").get<double>();
+  const Mission mission = load_mission("aac");
+  const ControlSoftware software = parse_control_software(kFsm);
+  const double evaluated = app::score_seeds(mission, software, {3}).at(0);
+  EXPECT_EQ(std::memcmp(&streamed, &evaluated, sizeof(double)), 0) << streamed << " vs " << evaluated;
+}
+
+TEST_F(WebServer, FiftyViewersWatchOneRunAndEachGetsAllOfIt) {
+  const std::int64_t run = start_run(*alice_, kFsm, "aac", 5);
+  const std::string path = "/api/runs/" + std::to_string(run) + "/stream";
+  std::vector<std::string> seen(50);
+  std::vector<std::thread> viewers;
+  for (std::size_t v = 0; v < seen.size(); ++v)
+    viewers.emplace_back([&, v] {
+      WebClient viewer(server_->port(), *alice_);  // fifty tabs of Alice's browser
+      const Answer a = viewer.stream(path);
+      seen[v] = a.status == 200 ? a.text : std::to_string(a.status) + " " + a.text;
+    });
+  for (auto& t : viewers) t.join();
+  const auto reference = events(seen[0], "end");
+  ASSERT_EQ(reference.size(), 1u);
+  for (std::size_t v = 0; v < seen.size(); ++v) {
+    EXPECT_EQ(events(seen[v], "frames").size(), events(seen[0], "frames").size()) << "viewer " << v << ": " << seen[v].substr(0, 200);
+    EXPECT_EQ(events(seen[v], "end"), reference) << "viewer " << v;
+  }
+  EXPECT_EQ(alice_->get("/api/session").status, 200);
+}
+
+TEST_F(WebServer, ADesignStartedFromThePageIsFollowedStoppedAndResumed) {
+  alice_project("d", "1100");
+  const Answer started = alice_->post("/api/projects/d/designs", {{"flavours", "chocolate"}, {"architectures", "fsm"}, {"seed", 7}});
+  ASSERT_EQ(started.status, 200) << started.text;
+  EXPECT_EQ(started.body.at("state"), "running");
+  const Answer second = alice_->post("/api/projects/d/designs", {{"flavours", "chocolate"}, {"architectures", "fsm"}});
+  EXPECT_EQ(second.status, 409) << "one design at a time: " << second.text;
+
+  std::int64_t used = 0;
+  ASSERT_TRUE(wait_until([&] {
+    const Answer s = alice_->get("/api/projects/d/status");
+    used = s.body.at("progress").at("experiments_used").get<std::int64_t>();
+    return s.body.at("running_here").get<bool>() && used > 0;
+  }, std::chrono::seconds(120)));
+  ASSERT_EQ(alice_->post("/api/projects/d/designs/stop", json::object()).status, 200);
+  ASSERT_TRUE(wait_until([&] { return alice_->get("/api/projects/d/status").body.at("design").at("state") != "running"; },
+                         std::chrono::seconds(120)));
+  const Answer stopped = alice_->get("/api/projects/d/status");
+  EXPECT_EQ(stopped.body.at("design").at("state"), "interrupted");
+  EXPECT_FALSE(stopped.body.at("running_here").get<bool>());
+
+  const Answer resumed = alice_->post("/api/projects/d/designs", json::object());
+  ASSERT_EQ(resumed.status, 200) << resumed.text;
+  EXPECT_EQ(resumed.body.at("id"), started.body.at("id")) << "the interrupted design resumes";
+  ASSERT_TRUE(wait_until([&] { return alice_->get("/api/projects/d/status").body.at("design").at("state") == "finished"; },
+                         std::chrono::seconds(300)));
+  const Answer done = alice_->get("/api/projects/d/status");
+  EXPECT_GE(done.body.at("progress").at("experiments_used").get<std::int64_t>(), used);
+  EXPECT_FALSE(done.body.at("race_log").empty());
+  EXPECT_EQ(alice_->get("/api/projects/d/designs").body.size(), 1u);
+}
+
+TEST_F(WebServer, TheServerBindsTheLoopbackAddressByDefault) {
+  EXPECT_EQ(web::WebServerOptions{}.host, "127.0.0.1");
+  // The command's own default, as a user starts it.
+  const std::string out = [&] {
+    const std::string command = "SWARMDESIGN_HOME='" + (root_ / "home").string() + "' timeout 3 " + SWARMDESIGN_BINARY +
+                                " run-exp --port 0 --web-root '" + root_.string() + "' 2>&1";
+    std::string text;
+    FILE* pipe = ::popen(command.c_str(), "r");
+    char buffer[256];
+    while (pipe && std::fgets(buffer, sizeof buffer, pipe)) text += buffer;
+    if (pipe) ::pclose(pipe);
+    return text;
+  }();
+  EXPECT_TRUE(std::regex_search(out, std::regex(R"(http://127\.0\.0\.1:\d+/)"))) << out;
+  EXPECT_EQ(out.find("Warning"), std::string::npos) << out;
+}
+
+}  // namespace
+}  // namespace sd::test
