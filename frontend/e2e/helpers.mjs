@@ -9,8 +9,8 @@ import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
-export const BIN = process.env.SWARMDESIGN_BIN || '/work/main/build/swarmdesign';
-export const SCREENSHOTS = process.env.SWARMDESIGN_SCREENSHOTS || '/work/main/build/screenshots';
+export const BIN = process.env.SWARMDESIGN_BIN || path.join(here, '..', '..', 'build', 'swarmdesign');
+export const SCREENSHOTS = process.env.SWARMDESIGN_SCREENSHOTS || path.join(here, '..', '..', 'build', 'screenshots');
 export const CHROMIUM = process.env.CHROMIUM || '/usr/bin/chromium';
 export const PASSWORD = 'correct-horse-1';
 

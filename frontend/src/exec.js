@@ -100,7 +100,11 @@ export function initExec() {
     }
     last = now;
     if (plotDirty) { updatePlot(); plotDirty = false; }
-    if (dirty) { render(); dirty = false; }
+    if (dirty) {
+      render();
+      dirty = false;
+      window.__sdFramesDrawn = (window.__sdFramesDrawn || 0) + 1;  // bench/web_viewer.mjs
+    }
     requestAnimationFrame(frame);
   }
   requestAnimationFrame(frame);
@@ -119,13 +123,14 @@ export function initExec() {
     viewer.run = null;
     dirty = true;
     let answer;
+    const started = performance.now();  // Exec pressed: the first frame is timed from here
+    window.__sdFirstFrameMs = 0;
     try {
       answer = await api('/api/runs', { body: { text, mission, seed } });
     } catch (e) {
       $('exec-status').textContent = `refused: ${e.message}`;
       return;
     }
-    const started = performance.now();
     $('exec-status').textContent = `run ${answer.id}: waiting for the scene…`;
     stream = openRun(answer.id, {
       scene(r) {
@@ -147,6 +152,7 @@ export function initExec() {
       },
       end(result) {
         ended = true;
+        window.__sdEndMs = performance.now() - started;  // bench/web_viewer.mjs
         $('final-score').textContent = result.scoreText;
         $('final-score').dataset.value = String(result.score);
         $('exec-status').textContent = `run ${answer.id} complete: ${result.ticks} ticks`;
