@@ -31,8 +31,13 @@ double traced_run(const Mission& mission, const ControlSoftware& software, std::
   std::ofstream out(trace);
   if (!out) throw std::runtime_error("cannot write the trace file " + trace.string());
   TraceWriter writer(out);
+  return observed_run(mission, software, seed, writer);
+}
+
+double observed_run(const Mission& mission, const ControlSoftware& software, std::uint64_t seed,
+                    TickObserver& observer) {
   Simulation simulation(mission, software);
-  return simulation.run(seed, &writer);
+  return simulation.run(seed, &observer);
 }
 
 }  // namespace sd::app

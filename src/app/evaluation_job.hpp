@@ -9,6 +9,7 @@
 
 #include "control/control_software.hpp"
 #include "evaluation/evaluator.hpp"
+#include "evaluation/simulation.hpp"
 #include "missions/mission.hpp"
 
 namespace sd::app {
@@ -24,6 +25,11 @@ struct ScoreOptions {
 /// Scores per seed, in seed order.
 std::vector<double> score_seeds(const Mission& mission, const ControlSoftware& software,
                                 const std::vector<std::uint64_t>& seeds, const ScoreOptions& options = {});
+
+/// One run watched tick by tick (a viewer, a trace): the same run, and the same score, as
+/// score_seeds gives for that seed.
+double observed_run(const Mission& mission, const ControlSoftware& software, std::uint64_t seed,
+                    TickObserver& observer);
 
 /// One run whose every tick (poses, LEDs, running objective) is written to `trace` as CSV;
 /// returns its score, the same as score_seeds gives for that seed.

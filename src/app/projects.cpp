@@ -47,6 +47,19 @@ storage::Project set_budget(Home& home, const storage::User& user, const std::st
   return storage::Projects(home.workspace(), user).set_budget(runs);
 }
 
+storage::Project create_configured_project(Home& home, const storage::User& user, const std::string& name,
+                                           const std::string& mission, const std::string& budget) {
+  require(storage::project_name_problem(name));
+  if (mission.empty()) throw InvalidRequest("no mission chosen");
+  load_requested_mission(mission);
+  const long long runs = parse_budget(budget);
+  storage::Projects projects(home.workspace(), user);
+  projects.create(name, std::nullopt);
+  projects.select(name);
+  projects.set_mission(mission_reference(mission));
+  return projects.set_budget(runs);
+}
+
 storage::Project set_mission(Home& home, const storage::User& user, const std::string& mission) {
   if (mission.empty()) throw InvalidRequest("no mission chosen");
   storage::Projects projects(home.workspace(), user);

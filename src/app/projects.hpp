@@ -29,6 +29,12 @@ storage::Project set_budget(Home& home, const storage::User& user, const std::st
 /// the project runs from any folder; InvalidRequest for a mission that cannot be loaded.
 storage::Project set_mission(Home& home, const storage::User& user, const std::string& mission);
 
+/// A project ready to design in one step (a server's "new project"): name, mission and budget
+/// are all checked before anything is written, so a refusal leaves no half-made project. It
+/// becomes the active project, as new-project and select-project make it.
+storage::Project create_configured_project(Home& home, const storage::User& user, const std::string& name,
+                                           const std::string& mission, const std::string& budget);
+
 /// What is said of a cluster project until cluster runs exist.
 extern const char* const kClusterNotYet;
 

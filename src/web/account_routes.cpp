@@ -9,15 +9,6 @@
 
 namespace sd::web {
 
-namespace {
-
-std::string text_field(const nlohmann::json& body, const char* key) {
-  if (!body.contains(key) || !body.at(key).is_string()) throw app::InvalidRequest(std::string(key) + " is missing");
-  return body.at(key).get<std::string>();
-}
-
-}  // namespace
-
 void add_account_routes(Routes& routes) {
   routes.post_public("/api/sign-in", [](Call& call) {
     const std::string name = text_field(call.body, "name");

@@ -27,6 +27,14 @@ nlohmann::json read_json_body(const httplib::Request& request) {
   return body;
 }
 
+std::string text_field(const nlohmann::json& body, const char* key) {
+  if (!body.contains(key) || body.at(key).is_null()) throw app::InvalidRequest(std::string(key) + " is missing");
+  const nlohmann::json& value = body.at(key);
+  if (value.is_string()) return value.get<std::string>();
+  if (value.is_number_integer()) return value.dump();
+  throw app::InvalidRequest(std::string(key) + " must be text or a whole number");
+}
+
 void send_json(httplib::Response& response, const nlohmann::json& body, int status) {
   response.status = status;
   // Replace bad UTF-8 rather than throw: a name from a file must not take the answer down.

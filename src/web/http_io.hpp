@@ -24,6 +24,10 @@ int http_status(app::ErrorKind kind);
 /// The body as a JSON object; InvalidRequest naming what is wrong with it.
 nlohmann::json read_json_body(const httplib::Request& request);
 
+/// A field of a JSON body as text (a whole number is taken as its digits: seeds, budgets);
+/// InvalidRequest naming the field when it is missing or of another type.
+std::string text_field(const nlohmann::json& body, const char* key);
+
 void send_json(httplib::Response& response, const nlohmann::json& body, int status = 200);
 /// {"error": "..."} with the status of the exception's kind; a failure of the server itself
 /// says only that it failed (the details go to the server's log).

@@ -5,6 +5,7 @@
 
 #include "app/control_software_document.hpp"
 #include "app/documents.hpp"
+#include "app/evaluation_job.hpp"
 #include "evaluation/simulation.hpp"
 #include "missions/svg.hpp"
 #include "simulator/epuck.hpp"
@@ -108,10 +109,9 @@ void LiveRun::simulate() {
                          {"ticks", mission_.ticks},
                          {"tick_seconds", epuck::kTickSeconds}};
     publish(sse("scene", scene.dump()));
-    // The same run as `evaluate` (Simulation::run), observed: the score is the same bits.
-    Simulation simulation(mission_, software_);
+    // The same run as `evaluate`, observed: the score is the same bits.
     FrameBatcher batcher(mission_.robots, [this](std::string e) { publish(std::move(e)); }, stopping_);
-    const double score = simulation.run(seed_, &batcher);
+    const double score = app::observed_run(mission_, software_, seed_, batcher);
     char number[40];
     std::snprintf(number, sizeof number, "%.17g", score);
     publish(sse("end", std::string("{\"score\":") + number + ",\"ticks\":" + std::to_string(mission_.ticks) + "}"), true);

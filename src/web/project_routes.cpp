@@ -1,20 +1,12 @@
 // The design monitor: a user's projects, their designs (started and stopped here or followed
 // while the CLI runs them), and control software saved in a project.
-#include <filesystem>
-#include <algorithm>
-#include <fstream>
-#include <regex>
-#include <sstream>
-
 #include "app/documents.hpp"
 #include "app/errors.hpp"
 #include "app/inputs.hpp"
 #include "app/project_design.hpp"
 #include "app/projects.hpp"
-#include "control/config_string.hpp"
-#include "core/durable_file.hpp"
+#include "app/saved_software.hpp"
 #include "design/design_space.hpp"
-#include "missions/catalogue.hpp"
 #include "storage/designs.hpp"
 #include "web/http_io.hpp"
 #include "web/routes.hpp"
@@ -25,42 +17,23 @@ namespace {
 
 using nlohmann::json;
 
-std::string text_of(const json& body, const char* key) {
-  if (!body.contains(key)) throw app::InvalidRequest(std::string(key) + " is missing");
-  const json& v = body.at(key);
-  if (v.is_string()) return v.get<std::string>();
-  if (v.is_number_integer()) return v.dump();
-  throw app::InvalidRequest(std::string(key) + " must be text or a whole number");
-}
-
 storage::Project project_of(Call& call) {
   return storage::Projects(call.home.workspace(), call.user).get(call.match(1));
 }
 
 app::ProjectDesignRequest design_request(const json& body) {
   app::ProjectDesignRequest request;
-  const std::string architectures = body.contains("architectures") ? text_of(body, "architectures") : "";
-  const std::string flavours = body.contains("flavours") ? text_of(body, "flavours") : "";
+  const std::string architectures = body.contains("architectures") ? text_field(body, "architectures") : "";
+  const std::string flavours = body.contains("flavours") ? text_field(body, "flavours") : "";
   try {
     request.space = design::request_from_text(architectures, flavours);
   } catch (const std::invalid_argument& e) {
     throw app::InvalidRequest(e.what());
   }
   request.space_given = !architectures.empty() || !flavours.empty();
-  if (body.contains("seed") && !body.at("seed").is_null()) request.seed = app::parse_seed(text_of(body, "seed"));
+  if (body.contains("seed") && !body.at("seed").is_null()) request.seed = app::parse_seed(text_field(body, "seed"));
   request.fresh = body.value("fresh", false);
   return request;
-}
-
-/// Saved control software: <project>/software/<name>.txt, one canonical string each.
-std::filesystem::path software_folder(const storage::Project& project) { return project.folder / "software"; }
-
-std::string software_name(const json& body) {
-  static const std::regex rule("[A-Za-z0-9][A-Za-z0-9._-]{0,63}");
-  const std::string name = text_of(body, "name");
-  if (!std::regex_match(name, rule))
-    throw app::InvalidRequest("name '" + name + "' must be 1-64 letters, digits, '.', '_' or '-', not starting with '.'");
-  return name;
 }
 
 }  // namespace
@@ -73,16 +46,9 @@ void add_project_routes(Routes& routes) {
   });
 
   routes.post("/api/projects", [](Call& call) {
-    const std::string name = text_of(call.body, "name");
-    // Every value is checked before the project exists, so a refusal leaves nothing behind.
-    const std::string mission = mission_reference(text_of(call.body, "mission"));
-    app::load_requested_mission(mission);
-    const std::string budget = text_of(call.body, "budget");
-    app::parse_budget(budget);
-    app::create_project(call.home, call.user, name, std::nullopt);
-    app::select_project(call.home, call.user, name);
-    app::set_mission(call.home, call.user, mission);
-    return app::project_document(app::set_budget(call.home, call.user, budget));
+    return app::project_document(app::create_configured_project(call.home, call.user, text_field(call.body, "name"),
+                                                                text_field(call.body, "mission"),
+                                                                text_field(call.body, "budget")));
   });
 
   routes.get(project + "/status", [](Call& call) {
@@ -116,28 +82,15 @@ void add_project_routes(Routes& routes) {
 
   routes.get(project + "/software", [](Call& call) {
     json list = json::array();
-    const auto folder = software_folder(project_of(call));
-    if (!std::filesystem::is_directory(folder)) return list;
-    std::vector<std::filesystem::path> files;
-    for (const auto& entry : std::filesystem::directory_iterator(folder))
-      if (entry.path().extension() == ".txt") files.push_back(entry.path());
-    std::sort(files.begin(), files.end());
-    for (const auto& file : files) {
-      std::ifstream in(file);
-      std::stringstream text;
-      text << in.rdbuf();
-      list.push_back({{"name", file.stem().string()}, {"text", text.str()}});
-    }
+    for (const auto& s : app::list_saved_software(call.home, call.user, call.match(1)))
+      list.push_back({{"name", s.name}, {"text", s.text}});
     return list;
   });
 
   routes.post(project + "/software", [](Call& call) -> json {
-    const storage::Project p = project_of(call);
-    const std::string name = software_name(call.body);
-    const std::string text = to_config_string(parse_control_software(text_of(call.body, "text")));
-    std::filesystem::create_directories(software_folder(p));
-    replace_file_durably(software_folder(p) / (name + ".txt"), text, 0644, Umask::Applies);
-    return {{"name", name}, {"text", text}};
+    const app::SavedSoftware s = app::save_software(call.home, call.user, call.match(1), text_field(call.body, "name"),
+                                                    text_field(call.body, "text"));
+    return {{"name", s.name}, {"text", s.text}};
   });
 }
 

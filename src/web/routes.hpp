@@ -9,9 +9,9 @@
 #include <functional>
 #include <string>
 
+#include "app/background_designs.hpp"
 #include "app/home.hpp"
 #include "storage/accounts.hpp"
-#include "web/design_runs.hpp"
 #include "web/run_registry.hpp"
 #include "web/session_guard.hpp"
 
@@ -19,11 +19,11 @@ namespace sd::web {
 
 /// What the routes share for the server's lifetime.
 struct WebContext {
-  explicit WebContext(std::filesystem::path home_folder) : home(home_folder), designs(home_folder) {}
+  explicit WebContext(std::filesystem::path home_folder) : home(home_folder), designs(home_folder, "web") {}
   std::filesystem::path home;
   SessionGuard guard;
   RunRegistry runs;
-  DesignRuns designs;
+  app::BackgroundDesigns designs;
 };
 
 /// One request being answered: its own connection to the home (SQLite connections are per

@@ -9,26 +9,11 @@
 
 namespace sd::web {
 
-namespace {
-
-std::uint64_t seed_of(const nlohmann::json& body) {
-  if (!body.contains("seed")) throw app::InvalidRequest("seed is missing");
-  const nlohmann::json& seed = body.at("seed");
-  if (seed.is_string()) return app::parse_seed(seed.get<std::string>());
-  if (seed.is_number_integer()) return app::parse_seed(seed.dump());
-  throw app::InvalidRequest("seed must be a whole number");
-}
-
-}  // namespace
-
 void add_run_routes(Routes& routes) {
   routes.post("/api/runs", [](Call& call) -> nlohmann::json {
-    if (!call.body.contains("text") || !call.body["text"].is_string()) throw app::InvalidRequest("text is missing");
-    if (!call.body.contains("mission") || !call.body["mission"].is_string())
-      throw app::InvalidRequest("mission is missing");
-    ControlSoftware software = parse_control_software(call.body["text"].get<std::string>());
-    Mission mission = load_user_mission(call.home, call.user, call.body["mission"].get<std::string>());
-    const std::uint64_t seed = seed_of(call.body);
+    ControlSoftware software = parse_control_software(text_field(call.body, "text"));
+    Mission mission = load_user_mission(call.home, call.user, text_field(call.body, "mission"));
+    const std::uint64_t seed = app::parse_seed(text_field(call.body, "seed"));
     std::string text = to_config_string(software);
     const std::int64_t id =
         call.context.runs.start(call.user.id, std::move(mission), std::move(software), std::move(text), seed);

@@ -13,10 +13,10 @@ void add_software_routes(Routes& routes) {
   routes.get("/api/catalogue", [](Call&) { return app::catalogue_document(); });
 
   routes.post("/api/parse", [](Call& call) -> nlohmann::json {
-    if (!call.body.contains("text") || !call.body["text"].is_string()) throw app::InvalidRequest("text is missing");
+    const std::string text = text_field(call.body, "text");
     ControlSoftware software;
     try {
-      software = parse_control_software(call.body["text"].get<std::string>());
+      software = parse_control_software(text);
     } catch (const ConfigError& e) {
       call.response.status = 400;
       return {{"error", e.what()}, {"token", app::token_named_in(e.what())}};

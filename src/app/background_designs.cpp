@@ -1,20 +1,19 @@
-#include "web/design_runs.hpp"
+#include "app/background_designs.hpp"
 
 #include <iostream>
 
-#include "app/errors.hpp"
 #include "storage/lease.hpp"
 
-namespace sd::web {
+namespace sd::app {
 
-DesignRuns::~DesignRuns() {
+BackgroundDesigns::~BackgroundDesigns() {
   std::lock_guard lock(mutex_);
   for (auto& [project, job] : jobs_) job->cancel.cancel();
   for (auto& [project, job] : jobs_)
     if (job->thread.joinable()) job->thread.join();
 }
 
-void DesignRuns::reap() {
+void BackgroundDesigns::reap() {
   for (auto it = jobs_.begin(); it != jobs_.end();) {
     if (it->second->done) {
       it->second->thread.join();
@@ -25,23 +24,23 @@ void DesignRuns::reap() {
   }
 }
 
-storage::Design DesignRuns::start(const storage::User& user, const std::string& project,
-                                  app::ProjectDesignRequest request) {
+storage::Design BackgroundDesigns::start(const storage::User& user, const std::string& project,
+                                  ProjectDesignRequest request) {
   std::lock_guard lock(mutex_);
   reap();
   request.project = project;
-  request.owner = storage::local_owner(0, "web-" + std::to_string(next_job_++)).text();
-  app::Home home(home_);
+  request.owner = storage::local_owner(0, job_ + "-" + std::to_string(next_job_++)).text();
+  Home home(home_);
   // Refuses a project whose design still runs (here or in another process) before any change.
-  auto design = std::make_shared<app::ProjectDesign>(app::start_project_design(home, user, request));
+  auto design = std::make_shared<ProjectDesign>(start_project_design(home, user, request));
   const std::int64_t project_id = design->project.id;
   auto job = std::make_unique<Job>();
   Job* j = job.get();
   j->thread = std::thread([design, j] {
     try {
-      app::run_project_design(*design, {.threads = 0, .evaluator = nullptr, .observer = nullptr, .cancel = &j->cancel});
+      run_project_design(*design, {.threads = 0, .evaluator = nullptr, .observer = nullptr, .cancel = &j->cancel});
     } catch (const std::exception& e) {  // recorded as failed by the job; the server goes on
-      std::cerr << "run-exp: design " << design->design.id << " failed: " << e.what() << "\n";
+      std::cerr << "design " << design->design.id << " failed: " << e.what() << "\n";
     }
     j->done = true;
   });
@@ -49,7 +48,7 @@ storage::Design DesignRuns::start(const storage::User& user, const std::string& 
   return design->design;
 }
 
-bool DesignRuns::stop(std::int64_t project_id) {
+bool BackgroundDesigns::stop(std::int64_t project_id) {
   std::lock_guard lock(mutex_);
   const auto it = jobs_.find(project_id);
   if (it == jobs_.end() || it->second->done) return false;
@@ -57,10 +56,10 @@ bool DesignRuns::stop(std::int64_t project_id) {
   return true;
 }
 
-bool DesignRuns::running_here(std::int64_t project_id) const {
+bool BackgroundDesigns::running_here(std::int64_t project_id) const {
   std::lock_guard lock(mutex_);
   const auto it = jobs_.find(project_id);
   return it != jobs_.end() && !it->second->done;
 }
 
-}  // namespace sd::web
+}  // namespace sd::app

@@ -1,0 +1,49 @@
+#include "app/saved_software.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <regex>
+
+#include "app/errors.hpp"
+#include "control/config_string.hpp"
+#include "core/durable_file.hpp"
+#include "storage/projects.hpp"
+
+namespace sd::app {
+
+namespace {
+
+std::filesystem::path folder_of(Home& home, const storage::User& user, const std::string& project) {
+  return storage::Projects(home.workspace(), user).get(project).folder / "software";
+}
+
+}  // namespace
+
+std::vector<SavedSoftware> list_saved_software(Home& home, const storage::User& user, const std::string& project) {
+  const auto folder = folder_of(home, user, project);
+  std::vector<SavedSoftware> list;
+  if (!std::filesystem::is_directory(folder)) return list;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    if (entry.path().extension() != ".txt") continue;
+    std::ifstream in(entry.path());
+    list.push_back({entry.path().stem().string(), std::string(std::istreambuf_iterator<char>(in), {})});
+  }
+  std::sort(list.begin(), list.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
+  return list;
+}
+
+SavedSoftware save_software(Home& home, const storage::User& user, const std::string& project,
+                            const std::string& name, const std::string& text) {
+  static const std::regex rule("[A-Za-z0-9][A-Za-z0-9._-]{0,63}");
+  if (!std::regex_match(name, rule))
+    throw InvalidRequest("name '" + name + "' must be 1-64 letters, digits, '.', '_' or '-', not starting with '.'");
+  SavedSoftware saved{name, to_config_string(parse_control_software(text))};
+  const auto folder = folder_of(home, user, project);
+  std::filesystem::create_directories(folder);
+  replace_file_durably(folder / (name + ".txt"), saved.text, 0644, Umask::Applies);
+  return saved;
+}
+
+}  // namespace sd::app
