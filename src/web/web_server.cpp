@@ -18,7 +18,13 @@ WebServer::WebServer(WebServerOptions options)
   s.set_payload_max_length(kMaxRequestBytes);
   s.set_read_timeout(10, 0);
   s.set_keep_alive_max_count(100);
-  s.set_tcp_nodelay(true);  // stream chunks are small: Nagle + delayed ACK would hold each for 40 ms
+  s.set_tcp_nodelay(true);
+  // SO_REUSEADDR only: cpp-httplib's default adds SO_REUSEPORT, with which a second server
+  // binds a port already served and the two silently share its connections.
+  s.set_socket_options([](socket_t sock) {
+    int yes = 1;
+    setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  });  // stream chunks are small: Nagle + delayed ACK would hold each for 40 ms
 
   if (!options_.web_root.empty() && !s.set_mount_point("/", options_.web_root.string()))
     throw std::runtime_error("the web root " + options_.web_root.string() +

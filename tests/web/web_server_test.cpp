@@ -292,6 +292,12 @@ TEST_F(WebServer, ADesignStartedFromThePageIsFollowedStoppedAndResumed) {
   EXPECT_EQ(alice_->get("/api/projects/d/designs").body.size(), 1u);
 }
 
+TEST_F(WebServer, ASecondServerCannotTakeAPortAlreadyServed) {
+  web::WebServer second({"127.0.0.1", server_->port(), {}, root_ / "home"});
+  EXPECT_THROW(second.bind(), std::runtime_error);
+  EXPECT_EQ(alice_->get("/api/session").status, 200);
+}
+
 TEST_F(WebServer, TheServerBindsTheLoopbackAddressByDefault) {
   EXPECT_EQ(web::WebServerOptions{}.host, "127.0.0.1");
   // The command's own default, as a user starts it.
