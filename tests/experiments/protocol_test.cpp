@@ -1,0 +1,114 @@
+// Protocols as data: the thesis' three experiments as spec §6 states them, a protocol file read
+// back exactly, and every malformed field refused with its path.
+#include <gtest/gtest.h>
+
+#include "experiments/protocol.hpp"
+
+namespace sd::experiments {
+namespace {
+
+using nlohmann::json;
+
+const MissionPlan& mission(const Protocol& p, const std::string& name) {
+  for (const auto& m : p.missions)
+    if (m.mission == name) return m;
+  throw std::runtime_error("no mission " + name);
+}
+
+TEST(experiments_Protocol, ValidationRunsEachFlavourAloneOnItsOwnMissionAndBudget) {
+  const Protocol p = builtin_protocol("validation");
+  EXPECT_EQ(p.designs, 10);
+  EXPECT_EQ(p.assessment_seeds, 20);
+  ASSERT_EQ(p.missions.size(), 5u);
+  const std::vector<std::tuple<std::string, long long, std::string, std::string>> expected = {
+      {"aac", 200000, "chocolate", "fsm"},          {"foraging", 50000, "maple", "bt"},
+      {"tutti-aggregation", 100000, "tuttifrutti", "fsm"}, {"grid-exploration", 100000, "coconut", "fsm"},
+      {"aggregation-xor", 200000, "arlequin", "fsm"}};
+  for (const auto& [name, budget, flavour, architecture] : expected) {
+    const MissionPlan& m = mission(p, name);
+    EXPECT_EQ(m.budget, budget) << name;
+    ASSERT_EQ(m.conditions.size(), 1u);
+    EXPECT_EQ(m.conditions[0].flavours, std::vector<std::string>{flavour});
+    EXPECT_EQ(m.conditions[0].architectures, std::vector<std::string>{architecture});
+  }
+}
+
+TEST(experiments_Protocol, CombinationAndArchitecture) {
+  const Protocol c = builtin_protocol("combination");
+  for (const auto& m : c.missions) {
+    ASSERT_EQ(m.conditions.size(), 2u);
+    EXPECT_EQ(m.conditions[1].name, "combined");
+    EXPECT_EQ(m.conditions[1].flavours.size(), 5u);
+    EXPECT_EQ(m.conditions[1].architectures, (std::vector<std::string>{"fsm", "bt"}));
+  }
+  EXPECT_EQ(condition_names(c), (std::vector<std::string>{"alone", "combined"}));
+  const Protocol a = builtin_protocol("architecture", true);
+  for (const auto& m : a.missions) {
+    EXPECT_EQ(m.budget, 200000);
+    ASSERT_EQ(m.conditions.size(), 3u);
+    EXPECT_EQ(m.conditions[0].architectures, std::vector<std::string>{"fsm"});
+    EXPECT_EQ(m.conditions[1].architectures, std::vector<std::string>{"bt"});
+    EXPECT_EQ(m.conditions[2].method, "evostick");
+  }
+  EXPECT_THROW(builtin_protocol("validaton"), ProtocolError);
+}
+
+TEST(experiments_Protocol, FileRoundTripAndOverrides) {
+  const Protocol p = builtin_protocol("combination", true);
+  EXPECT_EQ(to_json(protocol_from_json(to_json(p))), to_json(p));
+
+  ProtocolOverrides o;
+  o.missions = std::vector<std::string>{"foraging", "aac"};
+  o.designs = 2;
+  o.budget_scale = 0.01;
+  const Protocol small = with_overrides(p, o);
+  ASSERT_EQ(small.missions.size(), 2u);
+  EXPECT_EQ(small.missions[0].mission, "foraging");
+  EXPECT_EQ(scaled_budget(small, small.missions[0]), 500);
+  EXPECT_EQ(scaled_budget(small, small.missions[1]), 2000);
+  EXPECT_EQ(small.designs, 2);
+
+  o.missions = std::vector<std::string>{"sca"};
+  EXPECT_THROW(with_overrides(p, o), ProtocolError);
+}
+
+std::string error_of(const json& document) {
+  try {
+    protocol_from_json(document);
+  } catch (const ProtocolError& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+TEST(experiments_Protocol, MalformedFieldsAreNamedByTheirPath) {
+  const json good = json::parse(R"({"name": "mine", "missions": [{"mission": "aac", "budget": 1000,
+      "conditions": [{"name": "a", "architectures": ["fsm"], "flavours": ["chocolate"]}]}]})");
+  EXPECT_EQ(error_of(good), "(accepted)");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"/name", "name: must be a non-empty string"},
+      {"/missions/0/budget", "missions[0].budget: must be an integer"},
+      {"/missions/0/conditions/0/flavours/0", "missions[0].conditions[0].flavours[0]: unknown"},
+      {"/missions/0/conditions/0/architectures", "missions[0].conditions[0].architectures: must be a non-empty list"},
+      {"/missions/0/conditions", "missions[0].conditions: must be a non-empty list"},
+  };
+  for (const auto& [pointer, message] : cases) {
+    json bad = good;
+    bad[json::json_pointer(pointer)] = pointer.find("flavours") != std::string::npos ? json("vanilla") : json("x");
+    if (pointer == "/name") bad["name"] = "";
+    if (pointer.find("architectures") != std::string::npos || pointer == "/missions/0/conditions") bad[json::json_pointer(pointer)] = json::array();
+    EXPECT_NE(error_of(bad).find(message), std::string::npos) << error_of(bad);
+  }
+  json twice = good;
+  twice["missions"].push_back(good["missions"][0]);
+  EXPECT_NE(error_of(twice).find("missions[1].mission: 'aac' is listed twice"), std::string::npos) << error_of(twice);
+  json evo = good;
+  evo["missions"][0]["conditions"][0]["method"] = "evostick";
+  EXPECT_NE(error_of(evo).find("has no architectures or flavours"), std::string::npos) << error_of(evo);
+  json name = good;
+  name["name"] = "../etc";
+  EXPECT_NE(error_of(name).find("may only hold letters"), std::string::npos) << error_of(name);
+}
+
+}  // namespace
+}  // namespace sd::experiments
