@@ -1,12 +1,9 @@
 #include "app/project_design.hpp"
 
-#include <condition_variable>
-#include <mutex>
-#include <thread>
-
 #include "app/documents.hpp"
 #include "app/errors.hpp"
 #include "app/inputs.hpp"
+#include "app/lease_keeper.hpp"
 #include "control/config_string.hpp"
 #include "missions/catalogue.hpp"
 #include "storage/design_store.hpp"
@@ -16,46 +13,12 @@ namespace sd::app {
 
 namespace {
 
-/// Renews a running design's lease every kHeartbeatSeconds on its own connection, until stopped.
-class LeaseKeeper {
- public:
-  LeaseKeeper(const ProjectDesign& d) : thread_([this, home = d.home, project = d.project, id = d.design.id,
-                                                 owner = d.design.owner] { renew(home, project, id, owner); }) {}
-  ~LeaseKeeper() { stop(); }
-  LeaseKeeper(const LeaseKeeper&) = delete;
-  LeaseKeeper& operator=(const LeaseKeeper&) = delete;
-
-  void stop() {
-    {
-      std::lock_guard lock(mutex_);
-      stopping_ = true;
-    }
-    wake_.notify_all();
-    if (thread_.joinable()) thread_.join();
-  }
-
- private:
-  void renew(const std::filesystem::path& home, const storage::Project& project, std::int64_t id,
-             const std::string& owner) {
-    std::optional<Home> h;  // its own connection, opened at the first beat and kept
-    std::unique_lock lock(mutex_);
-    while (!wake_.wait_for(lock, std::chrono::seconds(storage::kHeartbeatSeconds), [&] { return stopping_; })) {
-      lock.unlock();
-      try {
-        if (!h) h.emplace(home);
-        storage::Designs(h->workspace(), project).heartbeat(id, owner);
-      } catch (const std::exception&) {
-        // A busy database misses one beat; the lease lasts several.
-      }
-      lock.lock();
-    }
-  }
-
-  std::mutex mutex_;
-  std::condition_variable wake_;
-  bool stopping_ = false;
-  std::thread thread_;
-};
+/// Renews a running design's lease until it ends.
+LeaseKeeper design_lease(const ProjectDesign& d) {
+  return LeaseKeeper(d.home, [project = d.project, id = d.design.id, owner = d.design.owner](Home& home) {
+    storage::Designs(home.workspace(), project).heartbeat(id, owner);
+  });
+}
 
 }  // namespace
 
@@ -104,7 +67,7 @@ ProjectDesign start_project_design(Home& home, const storage::User& user, const 
 DesignOutcome run_project_design(ProjectDesign& d, const DesignRunOptions& options) {
   DesignOutcome outcome;
   {
-    LeaseKeeper lease(d);
+    LeaseKeeper lease = design_lease(d);
     try {
       outcome = run_design(d.prepared, options);
     } catch (...) {
