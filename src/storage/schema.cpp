@@ -102,6 +102,66 @@ ALTER TABLE designs ADD COLUMN heartbeat_at INTEGER;  -- Unix seconds of the own
 UPDATE designs SET owner = process || '/' || coalesce(pid, 0) || '/cli', heartbeat_at = updated_at
   WHERE process IS NOT NULL;
 )sql",
+    // 4: experiments (spec §6): a protocol run as many designs, each assessed on fresh seeds.
+    // A design's race lives in its folder, as for `designs`; what the report needs is here.
+    R"sql(
+CREATE TABLE experiments (
+  id           INTEGER PRIMARY KEY,
+  project_id   INTEGER NOT NULL REFERENCES projects(id) ON DELETE CASCADE,
+  name         TEXT    NOT NULL COLLATE NOCASE CHECK (name <> ''),
+  protocol     TEXT    NOT NULL,          -- the protocol as run (JSON), with the command line's changes
+  state        TEXT    NOT NULL DEFAULT 'running'
+               CHECK (state IN ('running', 'finished', 'failed', 'interrupted')),
+  owner        TEXT    NOT NULL,          -- lease, as for designs (storage/lease.hpp)
+  heartbeat_at INTEGER NOT NULL,
+  path         TEXT    NOT NULL,          -- its folder, relative to the home
+  created_at   INTEGER NOT NULL,
+  updated_at   INTEGER NOT NULL,
+  finished_at  INTEGER,
+  UNIQUE (project_id, name)
+);
+
+-- One design of the protocol: a mission, a condition, a replicate. Stages go pending ->
+-- designing -> assessing -> done; each step is written when it is durable.
+CREATE TABLE experiment_designs (
+  id            INTEGER PRIMARY KEY,
+  experiment_id INTEGER NOT NULL REFERENCES experiments(id) ON DELETE CASCADE,
+  mission       TEXT    NOT NULL,
+  condition     TEXT    NOT NULL,
+  replicate     INTEGER NOT NULL CHECK (replicate >= 1),
+  method        TEXT    NOT NULL CHECK (method IN ('automode', 'evostick')),
+  architectures TEXT    NOT NULL,
+  flavours      TEXT    NOT NULL,
+  budget        INTEGER NOT NULL CHECK (budget > 0),
+  seed          INTEGER NOT NULL,
+  stage         TEXT    NOT NULL DEFAULT 'pending'
+                CHECK (stage IN ('pending', 'designing', 'assessing', 'done')),
+  configuration TEXT,                     -- the final control software
+  design_score  REAL,                     -- the optimiser's estimate of it
+  runs_used     INTEGER,
+  wall_seconds  REAL    NOT NULL DEFAULT 0,  -- designing and assessing, summed over resumptions
+  -- The same design (mission, method, space, budget, seed) already made by another experiment
+  -- of the project: runs are deterministic, so its result is taken instead of made again.
+  reused_from   INTEGER REFERENCES experiment_designs(id) ON DELETE SET NULL,
+  UNIQUE (experiment_id, mission, condition, replicate)
+);
+
+-- Best estimated score against runs used, after every race step (convergence curves).
+CREATE TABLE experiment_progress (
+  design_id  INTEGER NOT NULL REFERENCES experiment_designs(id) ON DELETE CASCADE,
+  runs_used  INTEGER NOT NULL,
+  best_score REAL    NOT NULL,
+  PRIMARY KEY (design_id, runs_used)
+);
+
+-- The final design scored on fresh seeds.
+CREATE TABLE experiment_assessments (
+  design_id INTEGER NOT NULL REFERENCES experiment_designs(id) ON DELETE CASCADE,
+  seed      INTEGER NOT NULL,
+  score     REAL    NOT NULL,
+  PRIMARY KEY (design_id, seed)
+);
+)sql",
 };
 
 }  // namespace
