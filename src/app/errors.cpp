@@ -1,13 +1,15 @@
 #include "app/errors.hpp"
 
 #include "control/config_string.hpp"
+#include "experiments/protocol.hpp"
 #include "missions/mission.hpp"
 
 namespace sd::app {
 
 ErrorKind classify(const std::exception& error) {
   if (dynamic_cast<const InvalidRequest*>(&error) || dynamic_cast<const storage::InvalidInput*>(&error) ||
-      dynamic_cast<const ConfigError*>(&error) || dynamic_cast<const MissionError*>(&error))
+      dynamic_cast<const ConfigError*>(&error) || dynamic_cast<const MissionError*>(&error) ||
+      dynamic_cast<const experiments::ProtocolError*>(&error))
     return ErrorKind::InvalidRequest;
   if (dynamic_cast<const NotFound*>(&error)) return ErrorKind::NotFound;
   if (dynamic_cast<const Conflict*>(&error)) return ErrorKind::Conflict;
