@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "app/accounts.hpp"
+#include "app/experiment_job.hpp"
 #include "app/project_design.hpp"
 #include "cli/command_registry.hpp"
 #include "control/config_string.hpp"
@@ -56,15 +57,37 @@ void print_race_log(const std::vector<storage::RaceRecord>& log) {
   }
 }
 
+void print_experiments(const std::vector<app::ExperimentProgress>& experiments) {
+  for (const auto& e : experiments) {
+    std::cout << "Experiment " << e.experiment.name << ": " << storage::to_string(e.experiment.state) << ", "
+              << e.designs_done << " of " << e.designs << " designs done";
+    if (e.current && e.experiment.state != storage::DesignState::finished)
+      std::cout << "; " << (e.experiment.state == storage::DesignState::running ? "now" : "next") << ": "
+                << app::mission_label(e.current->plan.mission) << " / " << e.current->plan.condition << " #" << e.current->plan.replicate
+                << " (" << storage::to_string(e.current->stage) << ")";
+    std::cout << "\n";
+    if (e.experiment.state == storage::DesignState::interrupted)
+      std::cout << "  It was interrupted; continue it by running the same swarmdesign experiment command again\n";
+    if (e.experiment.state == storage::DesignState::finished)
+      std::cout << "  Report it with: swarmdesign report " << e.experiment.name << "\n";
+  }
+}
+
 void status(const StatusOptions& o) {
   app::Home home;
-  const app::DesignStatus status = app::design_status(home, app::signed_in_user(home), o.complete);
+  const storage::User user = app::signed_in_user(home);
+  const app::DesignStatus status = app::design_status(home, user, o.complete);
+  const auto experiments = app::experiments_progress(home, user, status.project.name);
   if (o.json) {
-    std::cout << app::status_document(status, o.complete).dump(2) << "\n";
+    nlohmann::json document = app::status_document(status, o.complete);
+    document["experiments"] = app::experiments_document(experiments);
+    std::cout << document.dump(2) << "\n";
     return;
   }
+  print_experiments(experiments);
   if (!status.design) {
-    std::cout << "Project " << status.project.name << " has no design yet; start one with: swarmdesign run-design\n";
+    if (experiments.empty())
+      std::cout << "Project " << status.project.name << " has no design yet; start one with: swarmdesign run-design\n";
     return;
   }
   const storage::Design& d = *status.design;
@@ -81,7 +104,7 @@ void status(const StatusOptions& o) {
 
 CommandRegistrar registrar{41, [](CLI::App& app, Context&) {
   auto o = std::make_shared<StatusOptions>();
-  auto* cmd = app.add_subcommand("status", "Show the active project's current or last design");
+  auto* cmd = app.add_subcommand("status", "Show the active project's current or last design, and its experiments");
   cmd->add_flag("--complete", o->complete, "Add the whole race log: every iteration's configurations, instances, "
                                            "eliminations and elites");
   cmd->add_flag("--json", o->json, "Print one JSON document");

@@ -2,6 +2,7 @@
 // while the CLI runs them), and control software saved in a project.
 #include "app/documents.hpp"
 #include "app/errors.hpp"
+#include "app/experiment_job.hpp"
 #include "app/inputs.hpp"
 #include "app/project_design.hpp"
 #include "app/projects.hpp"
@@ -56,6 +57,7 @@ void add_project_routes(Routes& routes) {
     json doc = app::status_document(status, true);
     doc["running_here"] = call.context.designs.running_here(status.project.id);
     doc["budget"] = status.project.budget ? json(*status.project.budget) : json();
+    doc["experiments"] = app::experiments_document(app::experiments_progress(call.home, call.user, call.match(1)));
     return doc;
   });
 

@@ -1,0 +1,288 @@
+// The thesis' experiments (spec §6) and their reports: `experiment` runs a protocol in the
+// active project (resuming it when it was interrupted), `report` writes its HTML report and
+// CSV files. The jobs are the application layer's (app/experiment_job, app/experiment_report);
+// this file parses, prints and shows progress.
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "app/accounts.hpp"
+#include "app/experiment_job.hpp"
+#include "app/experiment_report.hpp"
+#include "app/inputs.hpp"
+#include "cli/command_registry.hpp"
+#include "cli/fault_injection.hpp"
+#include "cli/progress_line.hpp"
+#include "control/config_string.hpp"
+#include "storage/lease.hpp"
+
+namespace sd::cli {
+namespace {
+
+struct ExperimentOptions {
+  std::string name, file, missions, rename, project, seed;
+  int designs = 0, eval_seeds = 0;
+  double budget_scale = 1.0;
+  bool evostick = false, dry_run = false, json = false;
+  unsigned threads = 0;
+  CLI::Option *designs_option = nullptr, *eval_seeds_option = nullptr, *scale_option = nullptr;
+};
+
+std::string duration_text(double seconds) {
+  char text[64];
+  if (seconds < 120) std::snprintf(text, sizeof text, "%.0f s", seconds);
+  else if (seconds < 2 * 3600) std::snprintf(text, sizeof text, "%.0f min", seconds / 60);
+  else if (seconds < 3 * 86400) std::snprintf(text, sizeof text, "%.1f h", seconds / 3600);
+  else std::snprintf(text, sizeof text, "%.1f days", seconds / 86400);
+  return text;
+}
+
+experiments::Protocol read_protocol_file(const std::string& file) {
+  std::ifstream in(file);
+  if (!in) throw experiments::ProtocolError("cannot read the protocol file " + file);
+  try {
+    return experiments::protocol_from_json(nlohmann::json::parse(in, nullptr, true, /*ignore_comments=*/true));
+  } catch (const nlohmann::json::parse_error& e) {
+    throw experiments::ProtocolError(file + ": not a JSON document: " + e.what());
+  } catch (const experiments::ProtocolError& e) {
+    throw experiments::ProtocolError(file + ": " + e.what());
+  }
+}
+
+experiments::Protocol requested_protocol(const ExperimentOptions& o) {
+  if (!o.name.empty() && !o.file.empty()) throw UsageError("name a built-in experiment or give --file, not both");
+  if (o.name.empty() && o.file.empty())
+    throw UsageError("name an experiment (validation, combination, architecture) or give --file PROTOCOL");
+  if (!o.file.empty() && o.evostick) throw UsageError("--evostick adds a condition to a built-in experiment; write it in the file");
+  experiments::Protocol protocol = o.file.empty() ? experiments::builtin_protocol(o.name, o.evostick) : read_protocol_file(o.file);
+  experiments::ProtocolOverrides overrides;
+  if (!o.missions.empty()) {
+    std::vector<std::string> missions;
+    std::stringstream in(o.missions);
+    for (std::string m; std::getline(in, m, ',');)
+      if (!m.empty()) missions.push_back(m);
+    overrides.missions = missions;
+  }
+  if (o.designs_option->count()) overrides.designs = o.designs;
+  if (o.eval_seeds_option->count()) overrides.assessment_seeds = o.eval_seeds;
+  if (o.scale_option->count()) overrides.budget_scale = o.budget_scale;
+  if (!o.seed.empty()) overrides.seed = app::parse_seed(o.seed);
+  if (!o.rename.empty()) overrides.name = o.rename;
+  return experiments::with_overrides(std::move(protocol), overrides);
+}
+
+void print_plan(const app::PlannedExperiment& plan) {
+  const auto& p = plan.protocol;
+  std::cout << "Experiment " << p.name << ": " << p.missions.size() << " missions, " << p.designs
+            << " designs per condition, budget scale " << format_number(p.budget_scale) << ", each design assessed on "
+            << p.assessment_seeds << " fresh seeds\n";
+  for (const auto& d : plan.designs)
+    if (d.replicate == 1)
+      std::cout << "  " << app::mission_label(d.mission) << " / " << d.condition << ": "
+                << (d.method == "evostick" ? std::string("EvoStick") : d.architectures + " / " + d.flavours) << ", budget "
+                << d.budget << "\n";
+  std::cout << "  " << plan.designs.size() << " designs: " << plan.design_runs << " design runs and "
+            << plan.assessment_runs << " assessment runs\n";
+}
+
+nlohmann::json plan_document(const app::PlannedExperiment& plan, const app::DurationEstimate* estimate) {
+  nlohmann::json designs = nlohmann::json::array();
+  for (const auto& d : plan.designs)
+    designs.push_back({{"mission", d.mission}, {"condition", d.condition}, {"replicate", d.replicate}, {"method", d.method},
+                       {"architectures", d.architectures}, {"flavours", d.flavours}, {"budget", d.budget}, {"seed", d.seed}});
+  nlohmann::json doc{{"protocol", experiments::to_json(plan.protocol)}, {"designs", designs}, {"notes", plan.notes},
+                     {"design_runs", plan.design_runs}, {"assessment_runs", plan.assessment_runs}};
+  if (estimate) {
+    nlohmann::json missions = nlohmann::json::array();
+    for (const auto& m : estimate->missions)
+      missions.push_back({{"mission", m.mission}, {"runs", m.runs}, {"seconds_per_run", m.seconds_per_run}});
+    doc["estimate"] = {{"threads", estimate->threads}, {"seconds", estimate->seconds}, {"missions", missions}};
+  }
+  return doc;
+}
+
+/// What a running experiment shows: one live line for the design being made, one printed line
+/// per finished design.
+class ExperimentDisplay final : public app::ExperimentObserver {
+ public:
+  ExperimentDisplay(ProgressLine::Mode mode, bool quiet) : line_(mode), quiet_(quiet) {}
+
+  void design_started(const storage::ExperimentDesign& d, int index, int total) override {
+    char text[256];
+    std::snprintf(text, sizeof text, "[%d/%d] %s / %s #%d", index, total, app::mission_label(d.plan.mission).c_str(),
+                  d.plan.condition.c_str(),
+                  d.plan.replicate);
+    prefix_ = text;
+    line_.show(prefix_ + (d.stage == storage::DesignStage::pending ? "  starting" : "  resuming"));
+  }
+  void design_reused(const storage::ExperimentDesign& twin, const std::string& experiment) override {
+    line_.clear();
+    if (!quiet_)
+      std::cout << prefix_ << ": the same design as " << experiment << "'s #" << twin.plan.replicate << " of "
+                << twin.plan.condition << " (same mission, space, budget and seed): its result is reused\n";
+  }
+  void design_progress(std::int64_t runs, std::int64_t budget, double best) override {
+    line_.show(prefix_ + "  runs " + std::to_string(runs) + "/" + std::to_string(budget) + "  best so far " + format_number(best));
+  }
+  /// Fault injection counts every checkpoint of this process, whichever design it is in.
+  void checkpoint(std::int64_t) override { kill_if_checkpoint(++checkpoints_); }
+  void assessing(std::size_t done, std::size_t all) override {
+    line_.show(prefix_ + "  assessing " + std::to_string(done) + "/" + std::to_string(all));
+  }
+  void design_done(const storage::ExperimentDesign&, double score) override {
+    line_.clear();
+    if (!quiet_) std::cout << prefix_ << ": mean score " << format_number(score) << " on the assessment seeds\n" << std::flush;
+  }
+
+ private:
+  ProgressLine line_;
+  bool quiet_;
+  std::string prefix_;
+  std::int64_t checkpoints_ = 0;
+};
+
+void run_experiment_command(const ExperimentOptions& o) {
+  const app::PlannedExperiment plan = app::plan_experiment(requested_protocol(o));
+  for (const auto& note : plan.notes) std::cerr << "swarmdesign: note: " << note << "\n";
+  if (o.dry_run) {
+    const app::DurationEstimate estimate = app::estimate_duration(plan, o.threads);
+    if (o.json) {
+      std::cout << plan_document(plan, &estimate).dump(2) << "\n";
+      return;
+    }
+    print_plan(plan);
+    std::cout << "On this machine (" << estimate.threads << " threads, speed measured now):\n";
+    for (const auto& m : estimate.missions)
+      std::cout << "  " << m.mission << ": " << m.runs << " runs at " << format_number(std::round(m.seconds_per_run * 1e5) / 100)
+                << " ms per run = " << duration_text(m.seconds_per_run * static_cast<double>(m.runs)) << "\n";
+    std::cout << "  in all about " << duration_text(estimate.seconds) << " (simulation only; the optimiser adds a little)\n";
+    return;
+  }
+
+  app::StartedExperiment started = [&] {
+    app::Home home;
+    return app::start_experiment(home, app::signed_in_user(home), plan,
+                                 {o.project.empty() ? std::nullopt : std::optional(o.project),
+                                  storage::local_owner(0, "cli").text()});
+  }();
+  const std::string& name = started.experiment.name;
+  if (!o.json) {
+    if (started.already_finished) std::cout << "Experiment " << name << " of " << started.project.name << " has already finished.\n";
+    else if (started.resumed) std::cout << "Experiment " << name << " of " << started.project.name << " was interrupted; resuming it.\n";
+    else print_plan(plan);
+  }
+  ExperimentDisplay display(ProgressLine::terminal_if(!o.json), o.json);
+  const app::ExperimentOutcome outcome = app::run_experiment(started, {.threads = o.threads, .evaluator = nullptr,
+                                                                       .observer = &display, .cancel = nullptr});
+  if (o.json) {
+    app::Home home;
+    std::cout << app::experiments_document(app::experiments_progress(home, app::signed_in_user(home), started.project.name))
+                     .dump(2)
+              << "\n";
+    return;
+  }
+  if (!started.already_finished)
+    std::cout << "Experiment " << name << " finished: " << outcome.designs_done << " designs in "
+              << duration_text(outcome.wall_seconds) << (started.resumed ? " (this session)" : "") << ".\n";
+  std::cout << "Report it with: swarmdesign report " << name << "\n";
+}
+
+struct ReportOptions {
+  std::string experiment, out, project;
+  std::string web_root = SWARMDESIGN_WEB_ROOT;
+  bool json = false;
+};
+
+/// The headline: per mission and condition the median design score, and the Friedman test.
+void print_headline(const nlohmann::json& doc) {
+  for (const auto& box : doc["boxes"])
+    std::cout << "  " << box["mission"].get<std::string>() << " / " << box["condition"].get<std::string>() << ": median "
+              << format_number(box["median"].get<double>()) << " over " << box["n"] << " designs (IQR "
+              << format_number(box["q1"].get<double>()) << " to " << format_number(box["q3"].get<double>()) << ")\n";
+  for (const auto& w : doc["wilcoxon"])
+    if (!w["better"].is_null())
+      std::cout << "  " << w["mission"].get<std::string>() << ": " << w["better"].get<std::string>()
+                << " is better (Wilcoxon rank-sum p = " << format_number(w["p_value"].get<double>()) << ")\n";
+  if (const auto& f = doc["friedman"]; !f.is_null()) {
+    std::cout << "  Friedman across missions: p = " << (f["p_value"].is_null() ? "n/a" : format_number(f["p_value"].get<double>()))
+              << "; expected ranks:";
+    for (const auto& r : f["expected_ranks"])
+      std::cout << " " << r["condition"].get<std::string>() << " " << format_number(r["rank"].get<double>());
+    std::cout << "\n";
+  }
+}
+
+void report_command(const ReportOptions& o) {
+  app::Home home;
+  const nlohmann::json doc = app::experiment_report_document(home, app::signed_in_user(home), o.experiment,
+                                                             o.project.empty() ? std::nullopt : std::optional(o.project));
+  const std::filesystem::path out = o.out.empty() ? "report-" + o.experiment : o.out;
+  const auto files = app::write_experiment_report(doc, out, o.web_root);
+  if (o.json) {
+    std::cout << doc.dump(2) << "\n";
+    return;
+  }
+  const auto& e = doc["experiment"];
+  std::cout << "Report of experiment " << e["name"].get<std::string>() << " (" << e["state"].get<std::string>() << ", "
+            << e["designs_done"] << " of " << e["designs_planned"] << " designs done)\n";
+  print_headline(doc);
+  std::cout << "Written: " << (out / "report.html").string() << " (open it in a browser; it needs no network) and "
+            << files.size() - 2 << " CSV files in " << out.string() << "\n";
+}
+
+CommandRegistrar registrar{45, [](CLI::App& app, Context&) {
+  auto o = std::make_shared<ExperimentOptions>();
+  auto* cmd = app.add_subcommand("experiment", "Run one of the thesis' experiments (or your own protocol) in the active project");
+  cmd->add_option("name", o->name, "validation | combination | architecture");
+  cmd->add_option("--file", o->file, "Run your own protocol (a JSON file; see src/experiments/README.md)");
+  cmd->add_option("--missions", o->missions, "Only these missions, comma-separated (e.g. aac,foraging)");
+  o->designs_option = cmd->add_option("--designs", o->designs, "Independent designs per mission and condition (default 10)");
+  o->scale_option =
+      cmd->add_option("--budget-scale", o->budget_scale, "Multiply every budget (e.g. 0.05 for a quick look; default 1)");
+  o->eval_seeds_option =
+      cmd->add_option("--eval-seeds", o->eval_seeds, "Fresh seeds each final design is assessed on (default 20)");
+  cmd->add_option("--seed", o->seed, "Seed every design's seed derives from (default 1)");
+  cmd->add_option("--name", o->rename, "Store it under another name (to keep several variants of one protocol)");
+  cmd->add_flag("--evostick", o->evostick, "Add the EvoStick baseline as a further condition on every mission");
+  cmd->add_option("--project", o->project, "Run it in this project (default: the active one)");
+  cmd->add_option("--threads", o->threads, "Simulations in parallel (default: all cores)")->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--dry-run", o->dry_run, "Print what would run and how long it would take here, and stop");
+  cmd->add_flag("--json", o->json, "Print JSON documents instead of text");
+  cmd->footer(
+      "Experiments of spec §6, on the thesis' missions and budgets (aac 200 000, foraging 50 000,\n"
+      "tutti-aggregation 100 000, grid-exploration 100 000, aggregation-xor 200 000):\n"
+      "  validation    each flavour alone on its own mission (Maple with behaviour trees)\n"
+      "  combination   that, against all five flavours with both architectures\n"
+      "  architecture  all five flavours as finite-state machines against behaviour trees, budget 200 000\n"
+      "Designs run one after the other on all cores; every design and assessment is stored in the\n"
+      "project as it ends. Killed, the same command resumes it inside the design it was in and ends\n"
+      "with the same results. Budgets below the optimiser's minimum are raised to it (with a note).\n\n"
+      "Examples:\n  swarmdesign experiment validation --dry-run\n"
+      "  swarmdesign experiment combination --missions aac,foraging --designs 3 --budget-scale 0.05\n"
+      "  swarmdesign experiment --file my-protocol.json");
+  cmd->callback([o] { run_experiment_command(*o); });
+
+  auto r = std::make_shared<ReportOptions>();
+  auto* report = app.add_subcommand("report", "Write an experiment's report: HTML (opens offline) and CSV files");
+  report->add_option("experiment", r->experiment, "The experiment's name (as status lists them)")->required();
+  report->add_option("--out", r->out, "Folder to write into (default: ./report-EXPERIMENT)");
+  report->add_option("--project", r->project, "The experiment's project (default: the active one)");
+  report->add_option("--web-root", r->web_root, "Folder of the built front end (report.js)")->capture_default_str();
+  report->add_flag("--json", r->json, "Also print the report document (every number) on stdout");
+  report->footer(
+      "The report holds notched box plots of the design scores per mission and condition, Wilcoxon\n"
+      "rank-sum tests per mission, the Friedman test across missions with expected ranks, heat maps\n"
+      "of the modules the designs use, the architecture each chose, convergence curves, the best and\n"
+      "the median design drawn, and wall time; each table is also a CSV file. An unfinished\n"
+      "experiment is reported as far as it went.\n\n"
+      "Example:\n  swarmdesign report validation --out validation-report");
+  report->callback([r] { report_command(*r); });
+}};
+
+}  // namespace
+}  // namespace sd::cli
