@@ -66,25 +66,22 @@ std::pair<design::DesignSpaceChoice, long long> condition_space(const experiment
   }
 }
 
-/// Feeds a design's race steps to the experiment's store and observer.
+/// Shows a design's race steps to the experiment's observer (its convergence is read from its
+/// own design.db when reported).
 class DesignWatcher final : public DesignObserver {
  public:
-  DesignWatcher(storage::Experiments& store, const storage::ExperimentDesign& design, bool maximise,
-                ExperimentObserver* observer)
-      : store_(store), design_(design), maximise_(maximise), observer_(observer) {}
+  DesignWatcher(const storage::ExperimentDesign& design, bool maximise, ExperimentObserver* observer)
+      : design_(design), maximise_(maximise), observer_(observer) {}
 
   void progress(const design::Progress& p) override {
-    if (p.best_id == 0) return;  // a race that has not scored anyone yet
-    const double score = maximise_ ? -p.best_mean : p.best_mean;
-    store_.record_progress(design_.id, p.experiments_used, score);
-    if (observer_) observer_->design_progress(p.experiments_used, design_.plan.budget, score);
+    if (p.best_id == 0 || !observer_) return;  // a race that has not scored anyone yet
+    observer_->design_progress(p.experiments_used, design_.plan.budget, maximise_ ? -p.best_mean : p.best_mean);
   }
   void checkpoint(std::int64_t step) override {
     if (observer_) observer_->checkpoint(step);
   }
 
  private:
-  storage::Experiments& store_;
   const storage::ExperimentDesign& design_;
   bool maximise_;
   ExperimentObserver* observer_;
@@ -99,7 +96,7 @@ bool make_automode_design(storage::Experiments& store, const storage::Experiment
           : prepare_new_design({d.plan.mission, d.plan.budget,
                                 design::request_from_text(d.plan.architectures, d.plan.flavours), d.plan.seed},
                                d.folder);
-  DesignWatcher watcher(store, d, prepared.mission.objective.direction == Direction::Maximize, options.observer);
+  DesignWatcher watcher(d, prepared.mission.objective.direction == Direction::Maximize, options.observer);
   const DesignOutcome outcome =
       run_design(prepared, {.threads = options.threads, .evaluator = options.evaluator, .observer = &watcher,
                             .cancel = options.cancel});

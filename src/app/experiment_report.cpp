@@ -18,6 +18,7 @@
 #include "experiments/protocol.hpp"
 #include "experiments/statistics.hpp"
 #include "missions/catalogue.hpp"
+#include "storage/design_status.hpp"
 #include "storage/experiments.hpp"
 #include "storage/projects.hpp"
 
@@ -122,7 +123,13 @@ json design_document(const storage::ExperimentDesign& d, const std::string& miss
     scores.push_back(score);
   }
   json convergence = json::array();
-  for (const auto& [runs, best] : store.progress(d.id)) convergence.push_back({runs, best});
+  if (d.plan.method == "evostick") {
+    for (const auto& [runs, best] : store.progress(d.id)) convergence.push_back({runs, best});
+  } else {
+    // The race's own record, at the end of every iteration; a reused design's is its twin's.
+    const auto folder = d.reused_from ? store.design(*d.reused_from).folder : d.folder;
+    for (const auto& p : storage::read_convergence(folder)) convergence.push_back({p.runs_used, p.best_score});
+  }
   return {{"id", d.id},
           {"mission", mission},
           {"condition", d.plan.condition},
@@ -263,7 +270,7 @@ void per_cell_tables(const Analysis& a, json& report) {
                                {"nn", chosen["nn"]}});
       wall.push_back({{"mission", m.key}, {"condition", c}, {"designs", cell->designs.size()}, {"runs", runs},
                       {"wall_seconds", seconds}});
-      // The best design, and the median one (the lower of the two middle ones for an even count).
+      // The best design, and the median one (the worse of the two middle ones for an even count).
       std::vector<const json*> order = cell->designs;
       std::stable_sort(order.begin(), order.end(), [&](const json* x, const json* y) {
         const double sx = (*x)["score"].get<double>(), sy = (*y)["score"].get<double>();
@@ -272,7 +279,7 @@ void per_cell_tables(const Analysis& a, json& report) {
       typical.push_back({{"mission", m.key},
                          {"condition", c},
                          {"best", (*order.front())["id"]},
-                         {"median", (*order[(order.size() - 1) / 2])["id"]}});
+                         {"median", (*order[order.size() / 2])["id"]}});
     }
   report["architectures"] = std::move(architectures);
   report["wall_time"] = std::move(wall);

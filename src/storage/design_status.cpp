@@ -119,4 +119,28 @@ std::vector<RaceRecord> read_race_log(const std::filesystem::path& folder) {
   return log;
 }
 
+std::vector<ConvergencePoint> read_convergence(const std::filesystem::path& folder) {
+  Snapshot s(folder);
+  std::vector<ConvergencePoint> points;
+  auto best = s.db().prepare(
+      "SELECT iteration, configuration_id FROM elites e WHERE rank = (SELECT min(rank) FROM elites WHERE iteration = e.iteration) "
+      "ORDER BY iteration");
+  while (best.step()) {
+    ConvergencePoint p;
+    p.iteration = static_cast<int>(best.integer(0));
+    p.best_id = static_cast<int>(best.integer(1));
+    auto runs = s.db().prepare("SELECT count(*) FROM experiments WHERE iteration <= ?");
+    runs.bind(1, p.iteration);
+    runs.step();
+    p.runs_used = runs.integer(0);
+    auto mean = s.db().prepare("SELECT avg(cost) FROM experiments WHERE configuration_id = ? AND iteration <= ?");
+    mean.bind(1, p.best_id).bind(2, p.iteration);
+    if (mean.step() && !mean.is_null(0)) {
+      p.best_score = s.score(mean.real(0));
+      points.push_back(p);
+    }
+  }
+  return points;
+}
+
 }  // namespace sd::storage

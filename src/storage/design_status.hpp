@@ -44,8 +44,19 @@ struct RaceRecord {
   std::vector<int> elites;           // at the end of the iteration, best first (empty: racing)
 };
 
+/// Where a design stood at the end of an iteration: runs used so far, and its best elite's mean
+/// score over every run that elite had so far (the mission's natural units).
+struct ConvergencePoint {
+  int iteration = 0;
+  std::int64_t runs_used = 0;
+  double best_score = 0.0;
+  int best_id = 0;
+};
+
 /// DesignFolderError when the folder holds no readable design.
 DesignProgress read_design_progress(const std::filesystem::path& folder);
 std::vector<RaceRecord> read_race_log(const std::filesystem::path& folder);
+/// One point per finished iteration, in order (convergence curves).
+std::vector<ConvergencePoint> read_convergence(const std::filesystem::path& folder);
 
 }  // namespace sd::storage

@@ -198,6 +198,13 @@ std::vector<ExperimentDesign> Experiments::designs(std::int64_t experiment_id) {
   return all;
 }
 
+ExperimentDesign Experiments::design(std::int64_t design_id) {
+  auto query = workspace_.database().prepare(std::string(kSelectDesigns) + "WHERE d.id = ? AND e.project_id = ?");
+  query.bind(1, design_id).bind(2, project_.id);
+  if (!query.step()) throw NotFound("project " + project_.name + " has no experiment design " + std::to_string(design_id));
+  return read_design(query, workspace_);
+}
+
 std::optional<std::pair<ExperimentDesign, std::string>> Experiments::finished_twin(const ExperimentDesign& d) {
   auto query = workspace_.database().prepare(
       std::string(kSelectDesigns) +

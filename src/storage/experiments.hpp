@@ -75,6 +75,8 @@ class Experiments {
   std::vector<Experiment> list();
 
   std::vector<ExperimentDesign> designs(std::int64_t experiment_id);
+  /// A design of any experiment of the project (the twin a design reused); NotFound otherwise.
+  ExperimentDesign design(std::int64_t design_id);
   void set_stage(std::int64_t design_id, DesignStage stage);
   /// A design of another experiment of the project that is the same design (mission, method,
   /// space, budget and seed) and has its final control software; with the experiment's name.
@@ -86,7 +88,8 @@ class Experiments {
   void design_finished(std::int64_t design_id, const std::string& configuration, double design_score,
                        std::int64_t runs_used);
   void add_wall_seconds(std::int64_t design_id, double seconds);
-  /// Best estimated score after `runs_used` runs (a resumed design writes the same points again).
+  /// Best estimated score after `runs_used` runs, for designs without a race of their own to
+  /// read it from (EvoStick's generations); a resumed one writes the same points again.
   void record_progress(std::int64_t design_id, std::int64_t runs_used, double best_score);
   std::vector<std::pair<std::int64_t, double>> progress(std::int64_t design_id);
   /// Every assessment score at once, and the design is done.
