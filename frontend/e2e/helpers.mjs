@@ -25,8 +25,8 @@ export function freePort() {
   });
 }
 
-export function cli(env, args, input) {
-  return execFileSync(BIN, args, { env, input, encoding: 'utf8', stdio: ['pipe', 'pipe', 'pipe'], timeout: 60000 });
+export function cli(env, args, input, timeout = 60000) {
+  return execFileSync(BIN, args, { env, input, encoding: 'utf8', stdio: ['pipe', 'pipe', 'pipe'], timeout });
 }
 
 /// The front end as the tests see it: SWARMDESIGN_WEB_ROOT, or a fresh build of this folder.

@@ -8,6 +8,8 @@ export async function loadCatalogue() {
   return catalogue;
 }
 export function getCatalogue() { return catalogue; }
+/// Installs a catalogue that is already at hand (the offline report embeds one).
+export function setCatalogue(c) { catalogue = c; }
 
 /// kind: 'behaviour' | 'condition'
 export function findModule(kind, id) {
