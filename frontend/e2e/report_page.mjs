@@ -20,7 +20,7 @@ export function assembleReportHtml(webRoot, data) {
     + `<script>${js}</script></body></html>\n`;
 }
 
-/// Opens file://htmlPath, waits for window.__sdReportReady, takes a full-page screenshot and
+/// Opens file://htmlPath (or an http URL: the page as the server serves it), waits for window.__sdReportReady, takes a full-page screenshot and
 /// returns what the page shows: {plots, tables, drawings, errors, problems, requests}.
 /// errors: uncaught exceptions and console errors; requests: every URL the page asked for.
 export async function checkReport(page, htmlPath, screenshotPath) {
@@ -34,7 +34,8 @@ export async function checkReport(page, htmlPath, screenshotPath) {
   page.on('request', onRequest);
   try {
     // Parsing a 5 MB inline script takes seconds on a slow machine.
-    await page.goto(pathToFileURL(path.resolve(htmlPath)).href, { timeout: 120000 });
+    const url = /^https?:/.test(htmlPath) ? htmlPath : pathToFileURL(path.resolve(htmlPath)).href;
+    await page.goto(url, { timeout: 120000 });
     await page.waitForFunction(() => window.__sdReportReady === true, null, { timeout: 120000 });
     const counts = await page.evaluate(() => ({
       plots: document.querySelectorAll('.js-plotly-plot').length,

@@ -1,5 +1,6 @@
 // The Designs tab: the user's projects, start / stop a design, and its live status (polled):
-// runs used against the budget, iteration, configurations alive, elites, convergence, best drawn.
+// runs used against the budget, iteration, configurations alive, elites, convergence, best drawn;
+// the project's experiments with their progress and a link to each report.
 import { api } from './api.js';
 import { createGraph, renderModel } from './graph.js';
 import { linePlot } from './plot.js';
@@ -51,9 +52,25 @@ export function initMonitor({ onWatch, missions }) {
       el('span', { class: 'muted', text: `${d.mission} · ${d.budget}${d.best_score !== null && d.best_score !== undefined ? ` · best ${d.best_score}` : ''}` }))));
   }
 
+  /// The project's experiments (swarmdesign experiment): progress and a link to the report page.
+  function renderExperiments(s) {
+    const list = s.experiments || [];
+    $('experiment-list').replaceChildren(...list.map((e) => {
+      const current = e.current && e.state !== 'finished'
+        ? ` · ${e.state === 'running' ? 'now' : 'next'} ${e.current.mission} / ${e.current.condition} #${e.current.replicate}` : '';
+      const href = `/api/projects/${encodeURIComponent(selected)}/experiments/${encodeURIComponent(e.name)}/report`;
+      return el('li', { testid: `experiment-${e.name}` },
+        el('span', { text: `${e.name} · ${e.state}` }),
+        el('span', { class: 'muted', text: `${e.designs_done} / ${e.designs} designs${current}` }),
+        el('a', { href, target: '_blank', rel: 'noopener', testid: `report-${e.name}`, text: 'report' }));
+    }));
+    if (!list.length) $('experiment-list').append(el('li', { class: 'muted small', text: 'none (swarmdesign experiment)' }));
+  }
+
   function lastRace(s) { return s.race_log && s.race_log.length ? s.race_log[s.race_log.length - 1] : null; }
 
   function renderStatus(s) {
+    renderExperiments(s);
     const design = s.design;
     const progress = s.progress || {};
     if (!design) {
@@ -117,7 +134,7 @@ export function initMonitor({ onWatch, missions }) {
       const was = status && status.design && status.design.state;
       status = s;
       renderStatus(s);
-      running = !!(s.design && s.design.state === 'running');
+      running = !!(s.design && s.design.state === 'running') || (s.experiments || []).some((e) => e.state === 'running');
       if (s.design && was && was !== s.design.state) refreshDesigns();
     } catch (e) {
       $('design-state').textContent = e.message;

@@ -59,9 +59,10 @@ long long integer_field(const nlohmann::json& v, const std::string& path, long l
   return value;
 }
 
-/// A name safe in a file name and a table cell: letters, digits, '-', '_', '.'.
+/// A name safe in a file name, a URL and a table cell: a letter, then letters, digits, '-', '_', '.'.
 void check_name(const std::string& name, const std::string& path) {
   if (name.size() > 64) fail(path, "is longer than 64 characters");
+  if (name.empty() || !std::isalpha(static_cast<unsigned char>(name[0]))) fail(path, "'" + name + "' must start with a letter");
   for (const char c : name)
     if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.')
       fail(path, "'" + name + "' may only hold letters, digits, '-', '_' and '.'");

@@ -19,8 +19,10 @@ namespace sd::web {
 
 /// What the routes share for the server's lifetime.
 struct WebContext {
-  explicit WebContext(std::filesystem::path home_folder) : home(home_folder), designs(home_folder, "web") {}
+  WebContext(std::filesystem::path home_folder, std::filesystem::path web_root_folder)
+      : home(home_folder), web_root(std::move(web_root_folder)), designs(home_folder, "web") {}
   std::filesystem::path home;
+  std::filesystem::path web_root;  // the built front end (the report page's bundle)
   SessionGuard guard;
   RunRegistry runs;
   app::BackgroundDesigns designs;
@@ -72,5 +74,6 @@ void add_software_routes(Routes& routes);
 void add_mission_routes(Routes& routes);
 void add_run_routes(Routes& routes);
 void add_project_routes(Routes& routes);
+void add_experiment_routes(Routes& routes);
 
 }  // namespace sd::web

@@ -11,7 +11,7 @@ namespace sd::web {
 
 WebServer::WebServer(WebServerOptions options)
     : options_(std::move(options)),
-      context_(std::make_unique<WebContext>(options_.home)),
+      context_(std::make_unique<WebContext>(options_.home, options_.web_root)),
       server_(std::make_unique<httplib::Server>()) {
   httplib::Server& s = *server_;
   s.new_task_queue = [] { return new httplib::ThreadPool(kServerThreads); };
@@ -30,8 +30,10 @@ WebServer::WebServer(WebServerOptions options)
     throw std::runtime_error("the web root " + options_.web_root.string() +
                              " is not a folder: build the front end (cmake --build build --target frontend)");
   s.set_post_routing_handler([](const httplib::Request&, httplib::Response& response) {
-    // Everything the page loads comes from this server; nothing may frame it.
-    response.set_header("Content-Security-Policy",
+    // Everything the page loads comes from this server; nothing may frame it. A route may set a
+    // stricter policy of its own (the report page).
+    if (!response.has_header("Content-Security-Policy"))
+      response.set_header("Content-Security-Policy",
                         "default-src 'self'; img-src 'self' data: blob:; style-src 'self' 'unsafe-inline'; "
                         "frame-ancestors 'none'");
     response.set_header("X-Content-Type-Options", "nosniff");
@@ -50,6 +52,7 @@ WebServer::WebServer(WebServerOptions options)
   add_mission_routes(routes);
   add_run_routes(routes);
   add_project_routes(routes);
+  add_experiment_routes(routes);
 }
 
 WebServer::~WebServer() {

@@ -16,7 +16,7 @@ namespace sd::test {
 /// The server on a free loopback port, serving on its own thread until destroyed.
 class RunningServer {
  public:
-  explicit RunningServer(const std::filesystem::path& home);
+  explicit RunningServer(const std::filesystem::path& home, const std::filesystem::path& web_root = {});
   ~RunningServer();
   int port() const { return port_; }
 

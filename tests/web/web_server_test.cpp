@@ -14,9 +14,11 @@
 
 #include "app/accounts.hpp"
 #include "app/evaluation_job.hpp"
+#include "app/experiment_job.hpp"
 #include "control/config_string.hpp"
 #include "evaluation/simulation.hpp"
 #include "missions/catalogue.hpp"
+#include "storage/lease.hpp"
 #include "web/web_client.hpp"
 #include "workflow/design_helpers.hpp"
 
@@ -155,6 +157,49 @@ TEST_F(WebServer, ASecondUserCanNeitherListNorWatchNorStopTheFirstUsersWork) {
   bool listed = false;
   for (const json& m : alice_->get("/api/missions").body) listed = listed || m.at("name") == file;
   EXPECT_TRUE(listed);
+}
+
+TEST_F(WebServer, AnExperimentsReportIsServedToItsOwnerOnlyAsOneSelfContainedPage) {
+  alice_project("mine");
+  {
+    // A one-design experiment on the project's 10-second mission, run by the application layer.
+    experiments::Protocol protocol;
+    protocol.name = "tiny";
+    protocol.designs = 1;
+    protocol.assessment_seeds = 2;
+    protocol.missions = {{alice_->get("/api/projects").body.at(0).at("mission"), 1008,
+                          {{"alone", "automode", {"fsm"}, {"chocolate"}}}}};
+    app::Home home(root_ / "home");
+    const storage::User alice = app::sign_in_here(home, "alice", "alice-password").user;
+    app::StartedExperiment e = app::start_experiment(home, alice, app::plan_experiment(protocol), {"mine", storage::local_owner(0, "test").text()});
+    app::run_experiment(e, {.threads = 2, .evaluator = nullptr, .observer = nullptr, .cancel = nullptr});
+  }
+  const Answer list = alice_->get("/api/projects/mine/experiments");
+  ASSERT_EQ(list.status, 200) << list.text;
+  ASSERT_EQ(list.body.size(), 1u);
+  EXPECT_EQ(list.body[0].at("name"), "tiny");
+  EXPECT_EQ(list.body[0].at("designs_done"), 1);
+  EXPECT_EQ(alice_->get("/api/projects/mine/status").body.at("experiments"), list.body);
+
+  // The page needs the front end's report bundle: a server with the built web root.
+  RunningServer with_pages(root_ / "home", std::filesystem::path(SWARMDESIGN_BINARY).parent_path() / "web-root");
+  WebClient alice(with_pages.port()), bob(with_pages.port());
+  ASSERT_TRUE(alice.sign_in("alice", "alice-password"));
+  ASSERT_TRUE(bob.sign_in("bob", "bob-password"));
+  const Answer page = alice.get("/api/projects/mine/experiments/tiny/report");
+  ASSERT_EQ(page.status, 200) << page.text.substr(0, 300);
+  EXPECT_NE(page.text.find("<script id=\"report-data\" type=\"application/json\">"), std::string::npos);
+  std::vector<std::string> policies;
+  for (const auto& [name, value] : page.headers)
+    if (name == "Content-Security-Policy") policies.push_back(value);
+  ASSERT_EQ(policies.size(), 1u) << "two policies would both apply";
+  EXPECT_NE(policies[0].find("default-src 'none'"), std::string::npos) << policies[0];
+  EXPECT_NE(policies[0].find("script-src 'unsafe-inline'"), std::string::npos) << policies[0];
+
+  EXPECT_EQ(alice.get("/api/projects/mine/experiments/other/report").status, 404);
+  EXPECT_EQ(bob.get("/api/projects/mine/experiments").status, 404);
+  EXPECT_EQ(bob.get("/api/projects/mine/experiments/tiny/report").status, 404);
+  EXPECT_EQ(WebClient(with_pages.port()).get("/api/projects/mine/experiments/tiny/report").status, 401);
 }
 
 TEST_F(WebServer, BadInputGetsAClearErrorAndTheServerGoesOn) {

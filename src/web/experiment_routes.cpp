@@ -1,0 +1,27 @@
+// A project's experiments: their progress (the Designs tab lists them) and their report, the
+// same page `swarmdesign report` writes, made afresh from the database at every request.
+#include "app/experiment_job.hpp"
+#include "app/experiment_report.hpp"
+#include "web/http_io.hpp"
+#include "web/routes.hpp"
+
+namespace sd::web {
+
+void add_experiment_routes(Routes& routes) {
+  const std::string project = std::string("/api/projects/") + kNamePattern;
+
+  routes.get(project + "/experiments", [](Call& call) {
+    return app::experiments_document(app::experiments_progress(call.home, call.user, call.match(1)));
+  });
+
+  routes.get_raw(project + "/experiments/" + kNamePattern + "/report", [](Call& call) {
+    const auto document = app::experiment_report_document(call.home, call.user, call.match(2), call.match(1));
+    // The page is self-contained: its script, style and data are inline; it loads nothing.
+    call.response.set_header("Content-Security-Policy",
+                             "default-src 'none'; script-src 'unsafe-inline'; style-src 'unsafe-inline'; "
+                             "img-src data: blob:; frame-ancestors 'none'");
+    call.response.set_content(app::experiment_report_html(document, call.context.web_root), "text/html; charset=utf-8");
+  });
+}
+
+}  // namespace sd::web
