@@ -18,6 +18,7 @@
 #include "experiments/protocol.hpp"
 #include "experiments/statistics.hpp"
 #include "missions/catalogue.hpp"
+#include "storage/clock.hpp"
 #include "storage/design_status.hpp"
 #include "storage/experiments.hpp"
 #include "storage/projects.hpp"
@@ -34,15 +35,6 @@ namespace {
 
 /// Significance level of the per-mission tests and of the Friedman post-hoc.
 constexpr double kAlpha = 0.05;
-
-std::string iso_time(std::int64_t unix_seconds) {
-  const std::time_t t = static_cast<std::time_t>(unix_seconds);
-  std::tm utc{};
-  gmtime_r(&t, &utc);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return text;
-}
 
 std::vector<std::string> split(const std::string& text) {
   std::vector<std::string> parts;
@@ -398,9 +390,9 @@ json experiment_report_document(Home& home, const storage::User& user, const std
   report["experiment"] = {{"name", e.name},
                           {"project", p.name},
                           {"state", storage::to_string(e.state)},
-                          {"created_at", iso_time(e.created_at)},
-                          {"generated_at", iso_time(static_cast<std::int64_t>(std::time(nullptr)))},
-                          {"finished_at", e.finished_at ? json(iso_time(*e.finished_at)) : json(nullptr)},
+                          {"created_at", storage::format_iso_time(e.created_at)},
+                          {"generated_at", storage::format_iso_time(static_cast<std::int64_t>(std::time(nullptr)))},
+                          {"finished_at", e.finished_at ? json(storage::format_iso_time(*e.finished_at)) : json(nullptr)},
                           {"designs_planned", designs.size()},
                           {"designs_done", design_list.size()},
                           {"assessment_seeds", protocol.assessment_seeds},

@@ -137,6 +137,28 @@ TEST_F(experiment, AnotherExperimentReusesTheDesignsItAlreadyHas) {
   EXPECT_TRUE(second["friedman"].is_null());
 }
 
+TEST_F(experiment, TheEvoStickBaselineIsAConditionLikeAnyOther) {
+  user_with_active_project("alice", "thesis");
+  const std::string mission = write_short_mission(scratch()).string();
+  const auto protocol = write_file("evo.json", R"({"name": "evo", "designs": 1, "assessment_seeds": 2, "missions": [
+      {"mission": ")" + mission + R"(", "budget": 1500, "conditions": [
+        {"name": "alone", "architectures": ["fsm"], "flavours": ["chocolate"]},
+        {"name": "evostick", "method": "evostick"}]}]})");
+  const Outcome out = run({"experiment", "--file", protocol.string()});
+  ASSERT_EQ(out.exit_code, 0) << out.err;
+  EXPECT_NE(out.err.find("whole generations of 1000 runs: budget 1500 becomes 1000"), std::string::npos) << out.err;
+  const json r = report("evo", "thesis", scratch() / "evo");
+  ASSERT_EQ(r["designs"].size(), 2u);
+  const json& evo = r["designs"][1];
+  EXPECT_EQ(evo["condition"], "evostick");
+  EXPECT_EQ(evo["architecture"], "nn");
+  EXPECT_EQ(evo["runs_used"], 1000);
+  EXPECT_EQ(evo["convergence"].size(), 1u);  // one generation
+  EXPECT_EQ(evo["configuration"].get<std::string>().rfind("--nn-config", 0), 0u);
+  EXPECT_TRUE(evo["modules"]["behaviours"].empty());
+  EXPECT_EQ(r["architectures"][1]["nn"], 1);
+}
+
 TEST_F(experiment, DryRunCountsTheRunsAndMeasuresTheTime) {
   const json plan = json::parse(run_ok({"experiment", "validation", "--dry-run", "--json"}));
   EXPECT_EQ(plan["designs"].size(), 50u);  // 5 missions x 1 condition x 10 designs
