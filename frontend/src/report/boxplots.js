@@ -18,12 +18,17 @@ function translucent(hex, alpha) {
   return `rgba(${(n >> 16) & 255},${(n >> 8) & 255},${n & 255},${alpha})`;
 }
 
+/// A notch that reaches past its hinges says nothing a reader can use (few designs): Plotly would
+/// fold the box over it, so such a box is drawn without one; the CSV keeps the notch.
+function notchInsideHinges(box) { return box.notch_low >= box.q1 && box.notch_high <= box.q3; }
+
 function boxTrace(box, position, colour) {
+  const notched = notchInsideHinges(box);
   return {
     type: 'box', name: box.condition, x: [position],
     q1: [box.q1], median: [box.median], q3: [box.q3],
     lowerfence: [box.whisker_low], upperfence: [box.whisker_high],
-    notchspan: [(box.notch_high - box.notch_low) / 2], notched: true, notchwidth: 0.3,
+    ...(notched ? { notchspan: [(box.notch_high - box.notch_low) / 2], notched: true, notchwidth: 0.3 } : {}),
     boxpoints: false, width: BOX_WIDTH,
     fillcolor: translucent(colour, 0.18), line: { color: colour, width: 1.6 },
     hoverinfo: 'y',
@@ -77,7 +82,7 @@ export function renderPerformance(report, root) {
     `Each point is one design: the mean of its ${seeds ?? ''} assessment runs on fresh seeds. `
     + 'Boxes span the hinges (R boxplot.stats), whiskers reach the most extreme scores within 1.5 IQR of them, '
     + 'notches show median ± 1.58 IQR/√n: non-overlapping notches suggest different medians. '
-    + 'With few designs a notch can reach past its hinge and the box folds back, as R draws it.');
+    + 'With few designs a notch reaches past its hinges; such a box is drawn without one (boxes.csv has it).');
   const grid = el('div', { className: 'plot-grid' });
   node.append(grid);
   root.append(node);

@@ -33,18 +33,24 @@ function missionTable(report) {
   ], report.missions, { testid: 'missions', caption: 'Missions' });
 }
 
+/// One row per condition and mission (long, so that five missions still fit the page).
 function conditionTable(report) {
-  const offered = (c, m) => {
-    const p = c.per_mission?.[m.name];
-    if (!p) return el('span', { className: 'muted' }, 'not run');
-    return `${(p.architectures || []).join(' + ')} · ${(p.flavours || []).join(', ')}`;
-  };
+  const rows = [];
+  for (const c of report.conditions) {
+    for (const m of report.missions) {
+      const p = c.per_mission?.[m.name];
+      if (p) rows.push({ c, m, p });
+    }
+  }
+  const list = (xs) => (xs && xs.length ? xs.join(', ') : '–');
   return reportTable([
-    { title: 'condition', value: (c) => conditionCell(report, c.name) },
-    { title: 'label', value: (c) => c.label || '' },
-    { title: 'method', value: (c) => c.method || '' },
-    ...report.missions.map((m) => ({ title: `${m.name}: architectures · flavours`, value: (c) => offered(c, m) })),
-  ], report.conditions, { testid: 'conditions', caption: 'Conditions' });
+    { title: 'condition', value: (r) => conditionCell(report, r.c.name) },
+    { title: 'method', value: (r) => r.c.method || '' },
+    { title: 'mission', value: (r) => r.m.name },
+    { title: 'architectures', value: (r) => (r.c.method === 'evostick' ? 'neural network' : list(r.p.architectures)) },
+    { title: 'flavours', value: (r) => (r.c.method === 'evostick' ? '–' : list(r.p.flavours)) },
+    { title: 'budget (runs)', numeric: true, value: (r) => (r.p.budget ? formatCount(r.p.budget) : '–') },
+  ], rows, { testid: 'conditions', caption: 'Conditions' });
 }
 
 export function renderHeader(report, root) {
