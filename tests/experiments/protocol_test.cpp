@@ -106,8 +106,10 @@ TEST(experiments_Protocol, MalformedFieldsAreNamedByTheirPath) {
   evo["missions"][0]["conditions"][0]["method"] = "evostick";
   EXPECT_NE(error_of(evo).find("has no architectures or flavours"), std::string::npos) << error_of(evo);
   json name = good;
-  name["name"] = "../etc";
+  name["name"] = "a/../etc";
   EXPECT_NE(error_of(name).find("may only hold letters"), std::string::npos) << error_of(name);
+  name["name"] = "2026-run";  // a name is also a path segment of the web app's report address
+  EXPECT_NE(error_of(name).find("must start with a letter"), std::string::npos) << error_of(name);
 }
 
 }  // namespace
