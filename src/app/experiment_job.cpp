@@ -24,12 +24,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-std::string comma_joined(const std::vector<std::string>& items) {
-  std::string text;
-  for (const auto& item : items) text += (text.empty() ? "" : ",") + item;
-  return text;
-}
-
 /// A design's seed: a function of the protocol's seed and what the design is, so that the
 /// same protocol gives the same designs, and reordering or filtering missions changes none.
 std::uint64_t design_seed(const experiments::Protocol& protocol, const std::string& mission, const std::string& condition,
@@ -59,7 +53,7 @@ std::string where(const experiments::MissionPlan& m, const experiments::Conditio
 std::pair<design::DesignSpaceChoice, long long> condition_space(const experiments::MissionPlan& m,
                                                                  const experiments::Condition& c) {
   try {
-    const auto choice = resolve_space(design::request_from_text(comma_joined(c.architectures), comma_joined(c.flavours)));
+    const auto choice = resolve_space(design::request_from_names(c.architectures, c.flavours));
     return {choice, minimum_design_budget(design::build_design_space(choice))};
   } catch (const std::exception& e) {
     throw InvalidRequest(where(m, c) + ": " + e.what());
@@ -288,7 +282,7 @@ ExperimentOutcome run_experiment(StartedExperiment& e, const ExperimentRunOption
         store.add_wall_seconds(d.id, seconds_since(design_start));
         design_start = Clock::now();
       }
-      d = store.designs(e.experiment.id)[i];  // with its final control software
+      d = store.design(d.id);  // with its final control software
       assess(store, d, protocol.assessment_seeds, options);
       store.add_wall_seconds(d.id, seconds_since(design_start));
       ++outcome.designs_done;

@@ -14,6 +14,7 @@
 #include "app/errors.hpp"
 #include "app/experiment_job.hpp"
 #include "control/config_string.hpp"
+#include "design/design_space.hpp"
 #include "evaluation/results_version.hpp"
 #include "experiments/protocol.hpp"
 #include "experiments/statistics.hpp"
@@ -35,14 +36,6 @@ namespace {
 
 /// Significance level of the per-mission tests and of the Friedman post-hoc.
 constexpr double kAlpha = 0.05;
-
-std::vector<std::string> split(const std::string& text) {
-  std::vector<std::string> parts;
-  std::stringstream in(text);
-  for (std::string part; std::getline(in, part, ',');)
-    if (!part.empty()) parts.push_back(part);
-  return parts;
-}
 
 const char* architecture_name(Architecture a) {
   switch (a) {
@@ -375,8 +368,8 @@ json experiment_report_document(Home& home, const storage::User& user, const std
       a.conditions.push_back(d.plan.condition);
     methods[d.plan.condition] = d.plan.method;
     const std::string& mission = keys[d.plan.mission];
-    per_mission_spaces[d.plan.condition][mission] = {{"architectures", split(d.plan.architectures)},
-                                                            {"flavours", split(d.plan.flavours)},
+    per_mission_spaces[d.plan.condition][mission] = {{"architectures", design::split_list(d.plan.architectures)},
+                                                            {"flavours", design::split_list(d.plan.flavours)},
                                                             {"budget", d.plan.budget}};
     if (d.stage == storage::DesignStage::done) design_list.push_back(design_document(d, mission, store));
   }

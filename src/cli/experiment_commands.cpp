@@ -6,10 +6,8 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include "app/accounts.hpp"
 #include "app/experiment_job.hpp"
@@ -19,6 +17,7 @@
 #include "cli/fault_injection.hpp"
 #include "cli/progress_line.hpp"
 #include "control/config_string.hpp"
+#include "design/design_space.hpp"
 #include "storage/lease.hpp"
 
 namespace sd::cli {
@@ -42,32 +41,14 @@ std::string duration_text(double seconds) {
   return text;
 }
 
-experiments::Protocol read_protocol_file(const std::string& file) {
-  std::ifstream in(file);
-  if (!in) throw experiments::ProtocolError("cannot read the protocol file " + file);
-  try {
-    return experiments::protocol_from_json(nlohmann::json::parse(in, nullptr, true, /*ignore_comments=*/true));
-  } catch (const nlohmann::json::parse_error& e) {
-    throw experiments::ProtocolError(file + ": not a JSON document: " + e.what());
-  } catch (const experiments::ProtocolError& e) {
-    throw experiments::ProtocolError(file + ": " + e.what());
-  }
-}
-
 experiments::Protocol requested_protocol(const ExperimentOptions& o) {
   if (!o.name.empty() && !o.file.empty()) throw UsageError("name a built-in experiment or give --file, not both");
   if (o.name.empty() && o.file.empty())
     throw UsageError("name an experiment (validation, combination, architecture) or give --file PROTOCOL");
   if (!o.file.empty() && o.evostick) throw UsageError("--evostick adds a condition to a built-in experiment; write it in the file");
-  experiments::Protocol protocol = o.file.empty() ? experiments::builtin_protocol(o.name, o.evostick) : read_protocol_file(o.file);
+  experiments::Protocol protocol = o.file.empty() ? experiments::builtin_protocol(o.name, o.evostick) : experiments::read_protocol_file(o.file);
   experiments::ProtocolOverrides overrides;
-  if (!o.missions.empty()) {
-    std::vector<std::string> missions;
-    std::stringstream in(o.missions);
-    for (std::string m; std::getline(in, m, ',');)
-      if (!m.empty()) missions.push_back(m);
-    overrides.missions = missions;
-  }
+  if (!o.missions.empty()) overrides.missions = design::split_list(o.missions);
   if (o.designs_option->count()) overrides.designs = o.designs;
   if (o.eval_seeds_option->count()) overrides.assessment_seeds = o.eval_seeds;
   if (o.scale_option->count()) overrides.budget_scale = o.budget_scale;

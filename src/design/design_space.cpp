@@ -30,13 +30,6 @@ std::string display_name(Flavour f) {
   return "unknown";
 }
 
-std::vector<std::string> split(const std::string& text) {
-  std::vector<std::string> parts;
-  std::istringstream in(text);
-  for (std::string part; std::getline(in, part, ',');)
-    if (!part.empty()) parts.push_back(part);
-  return parts;
-}
 
 // Appends rather than `a + "," + b`: GCC 12 warns falsely (-Wrestrict) on such sums.
 std::string join(const std::vector<std::string>& parts) {
@@ -96,14 +89,27 @@ ParameterSpace build_design_space(const DesignSpaceChoice& choice) {
   return space;
 }
 
+std::vector<std::string> split_list(const std::string& text) {
+  std::vector<std::string> parts;
+  std::istringstream in(text);
+  for (std::string part; std::getline(in, part, ',');)
+    if (!part.empty()) parts.push_back(part);
+  return parts;
+}
+
 DesignSpaceRequest request_from_text(const std::string& architectures, const std::string& flavours) {
+  return request_from_names(split_list(architectures), split_list(flavours));
+}
+
+DesignSpaceRequest request_from_names(const std::vector<std::string>& architectures,
+                                      const std::vector<std::string>& flavours) {
   DesignSpaceRequest request;
-  for (const auto& a : split(architectures)) {
+  for (const auto& a : architectures) {
     if (a == "fsm") request.fsm = true;
     else if (a == "bt") request.bt = true;
     else throw std::invalid_argument("unknown architecture '" + a + "'");
   }
-  for (const auto& f : split(flavours)) {
+  for (const auto& f : flavours) {
     const auto flavour = flavour_from_name(f);
     if (!flavour) throw std::invalid_argument("unknown flavour '" + f + "'");
     request.flavours.push_back(*flavour);

@@ -35,5 +35,12 @@ ParameterSpace build_design_space(const DesignSpaceChoice& choice);
 
 /// Reads back what architectures_text()/flavours_text() wrote (a stored design).
 DesignSpaceRequest request_from_text(const std::string& architectures, const std::string& flavours);
+/// The same from lists of names ("fsm", "bt"; "chocolate", ...); std::invalid_argument naming
+/// an unknown one.
+DesignSpaceRequest request_from_names(const std::vector<std::string>& architectures,
+                                      const std::vector<std::string>& flavours);
+
+/// The items of a comma-separated list, empty ones left out ("fsm,bt" -> {"fsm", "bt"}).
+std::vector<std::string> split_list(const std::string& text);
 
 }  // namespace sd::design

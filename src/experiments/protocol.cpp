@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <fstream>
 #include <set>
 
 namespace sd::experiments {
@@ -195,6 +196,18 @@ nlohmann::json to_json(const Protocol& protocol) {
           {"budget_scale", protocol.budget_scale},
           {"seed", protocol.seed},
           {"missions", std::move(missions)}};
+}
+
+Protocol read_protocol_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw ProtocolError("cannot read the protocol file " + path);
+  try {
+    return protocol_from_json(nlohmann::json::parse(in, nullptr, true, /*ignore_comments=*/true));
+  } catch (const nlohmann::json::parse_error& e) {
+    throw ProtocolError(path + ": not a JSON document: " + e.what());
+  } catch (const ProtocolError& e) {
+    throw ProtocolError(path + ": " + e.what());
+  }
 }
 
 Protocol with_overrides(Protocol protocol, const ProtocolOverrides& o) {

@@ -53,6 +53,8 @@ std::vector<std::string> builtin_protocol_names();
 /// a typo cannot silently change an experiment).
 Protocol protocol_from_json(const nlohmann::json& document);
 nlohmann::json to_json(const Protocol& protocol);
+/// A protocol file (JSON, comments allowed); ProtocolError naming the file and the field.
+Protocol read_protocol_file(const std::string& path);
 
 /// What the command line may change of a protocol.
 struct ProtocolOverrides {

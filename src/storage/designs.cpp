@@ -14,13 +14,6 @@ constexpr std::string_view kSelectDesigns =
     "       created_at, updated_at, finished_at, coalesce(owner, ''), coalesce(heartbeat_at, 0) "
     "FROM designs WHERE project_id = ? ";
 
-DesignState state_from(const std::string& text) {
-  if (text == "finished") return DesignState::finished;
-  if (text == "failed") return DesignState::failed;
-  if (text == "interrupted") return DesignState::interrupted;
-  return DesignState::running;
-}
-
 Design read_design(const Statement& row, const Workspace& workspace) {
   Design design;
   design.id = row.integer(0);
@@ -29,7 +22,7 @@ Design read_design(const Statement& row, const Workspace& workspace) {
   design.mission = row.text(3);
   design.budget = row.integer(4);
   design.seed = static_cast<std::uint64_t>(row.integer(5));  // stored as its 64-bit pattern
-  design.state = state_from(row.text(6));
+  design.state = design_state_from(row.text(6));
   design.pid = static_cast<int>(row.integer(7));
   design.folder = workspace.resolve(row.text(8));
   if (!row.is_null(9)) design.best_config = row.text(9);
@@ -48,6 +41,13 @@ std::int64_t owner_pid(const std::string& owner) {
   return parsed ? parsed->pid : 0;
 }
 }  // namespace
+
+DesignState design_state_from(const std::string& text) {
+  if (text == "finished") return DesignState::finished;
+  if (text == "failed") return DesignState::failed;
+  if (text == "interrupted") return DesignState::interrupted;
+  return DesignState::running;
+}
 
 std::string to_string(DesignState state) {
   switch (state) {

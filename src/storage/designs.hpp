@@ -16,6 +16,8 @@ namespace sd::storage {
 enum class DesignState { running, finished, failed, interrupted };
 
 std::string to_string(DesignState state);
+/// Reads back what to_string wrote.
+DesignState design_state_from(const std::string& text);
 
 /// What run-design was asked for; mission and budget are copied from the project.
 struct DesignRequest {

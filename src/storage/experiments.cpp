@@ -17,13 +17,6 @@ constexpr std::string_view kSelectDesigns =
     "       d.configuration, d.design_score, d.runs_used, d.wall_seconds, d.reused_from, e.path, e.name "
     "FROM experiment_designs d JOIN experiments e ON e.id = d.experiment_id ";
 
-DesignState state_from(const std::string& text) {
-  if (text == "finished") return DesignState::finished;
-  if (text == "failed") return DesignState::failed;
-  if (text == "interrupted") return DesignState::interrupted;
-  return DesignState::running;
-}
-
 DesignStage stage_from(const std::string& text) {
   if (text == "designing") return DesignStage::designing;
   if (text == "assessing") return DesignStage::assessing;
@@ -36,7 +29,7 @@ Experiment read_experiment(const Statement& row, const Workspace& workspace) {
   e.id = row.integer(0);
   e.name = row.text(1);
   e.protocol = row.text(2);
-  e.state = state_from(row.text(3));
+  e.state = design_state_from(row.text(3));
   e.owner = row.text(4);
   e.heartbeat_at = row.integer(5);
   e.folder = workspace.resolve(row.text(6));
