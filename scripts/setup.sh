@@ -11,6 +11,7 @@ packages=(
   libcpp-httplib-dev  # the web app's server (run-exp)
   chromium  # the web app's browser tests (headless)
   jq  # bench/native_vs_irace.sh
+  openmpi-bin libopenmpi-dev  # designs on MPI ranks (mpirun -np N swarmdesign ...)
 )
 # Node.js and npm bundle the web app's front end; a machine that has them already keeps its own.
 if ! command -v npm >/dev/null 2>&1; then packages+=(nodejs npm); fi

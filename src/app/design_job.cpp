@@ -115,8 +115,8 @@ DesignOutcome run_design(PreparedDesign& d, const DesignRunOptions& options) {
     return storage::DesignStore::create(d.folder, meta);
   }();
 
-  std::optional<ThreadedEvaluator> threads;
-  Evaluator& evaluator = options.evaluator ? *options.evaluator : threads.emplace(static_cast<int>(options.threads));
+  std::unique_ptr<Evaluator> own;
+  Evaluator& evaluator = options.evaluator ? *options.evaluator : *(own = make_evaluator(static_cast<int>(options.threads)));
   SimulationRunner runner(d.mission, *d.space, evaluator);
   design::IteratedRace race(*d.space, d.options, runner);
   design::EliminationTracker eliminations;

@@ -13,8 +13,8 @@ namespace sd::app {
 std::vector<double> score_seeds(const Mission& mission, const ControlSoftware& software,
                                 const std::vector<std::uint64_t>& seeds, const ScoreOptions& options) {
   std::vector<double> scores(seeds.size());
-  std::optional<ThreadedEvaluator> threads;
-  Evaluator& evaluator = options.evaluator ? *options.evaluator : threads.emplace(options.threads);
+  std::unique_ptr<Evaluator> own;
+  Evaluator& evaluator = options.evaluator ? *options.evaluator : *(own = make_evaluator(options.threads));
   std::vector<EvaluationTask> tasks;
   for (const auto s : seeds) tasks.push_back({&software, s, 0});
   const std::size_t batch = options.progress ? static_cast<std::size_t>(std::max(1, evaluator.workers()) * 4) : tasks.size();

@@ -71,7 +71,8 @@ EvolutionOutcome run_module(const std::string& name, const evostick::Settings& s
 
 EvolutionOutcome run_mission(const Mission& mission, const evostick::Settings& settings, std::int64_t budget,
                              const std::string& output, const EvolutionRun& run, const Persistence& keep) {
-  ThreadedEvaluator evaluator(run.threads);
+  const std::unique_ptr<Evaluator> backend = make_evaluator(run.threads);
+  Evaluator& evaluator = *backend;
   EvolutionOutcome out;
   out.result = evostick::evolve(mission, mission.objective.direction, evaluator, settings, progress_of(run, settings),
                                 keep.from(), keep.sink());

@@ -193,7 +193,8 @@ PlannedExperiment plan_experiment(const experiments::Protocol& protocol) {
 
 DurationEstimate estimate_duration(const PlannedExperiment& plan, unsigned threads) {
   DurationEstimate estimate;
-  ThreadedEvaluator evaluator(static_cast<int>(threads));
+  const std::unique_ptr<Evaluator> backend = make_evaluator(static_cast<int>(threads));
+  Evaluator& evaluator = *backend;
   estimate.threads = evaluator.workers();
   std::map<std::string, std::int64_t> runs;
   for (const auto& d : plan.designs) runs[d.mission] += d.budget + plan.protocol.assessment_seeds;

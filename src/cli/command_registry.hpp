@@ -18,6 +18,8 @@ namespace sd::cli {
 /// (everything from --fsm-config / --bt-config to the end, as automode_main does).
 struct Context {
   std::vector<std::string> control_software;
+  /// Ranks of the MPI job this process is rank 0 of (1: not under mpirun).
+  int mpi_ranks = 1;
   bool has_control_software() const { return !control_software.empty(); }
 };
 

@@ -9,6 +9,10 @@
 #include <vector>
 
 #include "cli/command_registry.hpp"
+#include "evaluation/results_version.hpp"
+#ifdef SWARMDESIGN_WITH_MPI
+#include "mpi/session.hpp"
+#endif
 
 namespace sd::cli {
 
@@ -39,8 +43,20 @@ void print_error(const std::string& message) {
 
 }  // namespace
 
+int run_command(int argc, char** argv, sd::cli::Context& context);
+
 int main(int argc, char** argv) {
   sd::cli::Context context;
+#ifdef SWARMDESIGN_WITH_MPI
+  // Under mpirun every rank runs this program: rank 0 runs the command, the others evaluate.
+  const auto mpi = sd::mpi::Session::join_if_launched(argc, argv);
+  if (mpi && !mpi->is_root()) return mpi->serve();
+  if (mpi) context.mpi_ranks = mpi->size();
+#endif
+  return run_command(argc, argv, context);
+}
+
+int run_command(int argc, char** argv, sd::cli::Context& context) {
   std::vector<std::string> args;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -54,6 +70,8 @@ int main(int argc, char** argv) {
   CLI::App app{"SwarmDesign: automatic modular design of robot swarms.\n"
                "Control software (--fsm-config ... / --bt-config ...) goes last on the command line.",
                "swarmdesign"};
+  app.set_version_flag("--version", std::string("swarmdesign ") + SWARMDESIGN_VERSION + " (results version " +
+                                         std::to_string(sd::kResultsVersion) + ")");
   app.require_subcommand(1);
   app.fallthrough(false);
   sd::cli::register_all_commands(app, context);

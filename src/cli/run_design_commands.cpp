@@ -145,7 +145,12 @@ CommandRegistrar registrar{40, [](CLI::App& app, Context& context) {
       "and it ends exactly as if it had never stopped; when it cannot be resumed (its mission was edited,\n"
       "or it was begun by a swarmdesign whose runs score differently), --new gives it up and starts anew.\n\n"
       "Example:\n  swarmdesign run-design --fsm --chocolate --seed 1\n  swarmdesign run-design --detach");
-  cmd->callback([run] { run_design(*run); });
+  cmd->callback([run, &context] {
+    // A forked child would leave the MPI job behind: mpirun waits for rank 0 anyway.
+    if (run->detach && context.mpi_ranks > 1)
+      throw UsageError("--detach cannot be used under mpirun (mpirun waits for its ranks); leave it out");
+    run_design(*run);
+  });
 
   auto test = std::make_shared<TestDesignOptions>();
   auto* tcmd = app.add_subcommand("test-design", "Evaluate control software on the active project's mission");

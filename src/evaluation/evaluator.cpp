@@ -7,6 +7,20 @@
 
 namespace sd {
 
+namespace {
+EvaluatorFactory& installed_factory() {
+  static EvaluatorFactory factory;
+  return factory;
+}
+}  // namespace
+
+std::unique_ptr<Evaluator> make_evaluator(int threads) {
+  if (const auto& factory = installed_factory()) return factory(threads);
+  return std::make_unique<ThreadedEvaluator>(threads);
+}
+
+void set_evaluator_factory(EvaluatorFactory factory) { installed_factory() = std::move(factory); }
+
 ThreadedEvaluator::ThreadedEvaluator(int threads)
     : threads_(resolve_threads(threads)),
       slots_(static_cast<std::size_t>(threads_)) {}

@@ -5,6 +5,7 @@
 // written by task index, so a batch's result never depends on how many workers computed it or
 // which worker computed which task.
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -57,5 +58,14 @@ class ThreadedEvaluator final : public Evaluator {
   std::string mission_digest_;
   std::vector<Slot> slots_;
 };
+
+/// The evaluator a job uses when its caller brings none: local threads, unless the process
+/// installed another backend at start-up (a process started by mpirun installs MPI ranks), so
+/// that every job — designs, `evaluate --seeds`, evolutions, experiments — spreads over the
+/// machines it was launched on without knowing how.
+std::unique_ptr<Evaluator> make_evaluator(int threads = 0);
+using EvaluatorFactory = std::function<std::unique_ptr<Evaluator>(int threads)>;
+/// Installs the process's backend (empty: back to local threads). Call before jobs start.
+void set_evaluator_factory(EvaluatorFactory factory);
 
 }  // namespace sd

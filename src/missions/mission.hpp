@@ -52,6 +52,8 @@ struct Mission {
   /// description. A design records it, so that a resumed design can tell that its mission
   /// file has been edited in the meantime.
   std::string digest;
+  /// The document's text as read: what another process (an MPI rank) rebuilds the mission from.
+  std::string document;
   double duration_s = 120.0;
   int ticks = 1200;
   int robots = 20;

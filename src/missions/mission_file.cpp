@@ -261,6 +261,7 @@ Mission parse_mission(const std::string& json_text, const std::string& source) {
   Mission m;
   m.source = source;
   m.digest = runs_digest(document);
+  m.document = json_text;
   m.name = root.at("name").text();
   if (m.name.empty() || m.name.find_first_of("/ \t") != std::string::npos)
     root.at("name").fail("must be a non-empty word without spaces or slashes");

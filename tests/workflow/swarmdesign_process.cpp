@@ -55,22 +55,32 @@ int wait_for(pid_t pid) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-/// Spawns the binary with the given file actions.
-pid_t spawn(const std::vector<std::string>& args, const Environment& environment,
+/// Spawns a program (looked up on PATH unless it is a path) with the given file actions.
+pid_t spawn(const std::string& program, const std::vector<std::string>& args, const Environment& environment,
             const posix_spawn_file_actions_t* actions, const posix_spawnattr_t* attributes = nullptr) {
-  std::vector<std::string> argv_strings{SWARMDESIGN_BINARY};
+  std::vector<std::string> argv_strings{program};
   argv_strings.insert(argv_strings.end(), args.begin(), args.end());
   auto env_strings = child_environment(environment);
   auto argv = pointers(argv_strings);
   auto envp = pointers(env_strings);
   pid_t pid = 0;
-  if (const int error = ::posix_spawn(&pid, SWARMDESIGN_BINARY, actions, attributes, argv.data(), envp.data()))
-    throw std::system_error(error, std::generic_category(), "posix_spawn " SWARMDESIGN_BINARY);
+  if (const int error = ::posix_spawnp(&pid, program.c_str(), actions, attributes, argv.data(), envp.data()))
+    throw std::system_error(error, std::generic_category(), "posix_spawn " + program);
   return pid;
+}
+
+pid_t spawn(const std::vector<std::string>& args, const Environment& environment,
+            const posix_spawn_file_actions_t* actions, const posix_spawnattr_t* attributes = nullptr) {
+  return spawn(SWARMDESIGN_BINARY, args, environment, actions, attributes);
 }
 }  // namespace
 
 Outcome run_swarmdesign(const std::vector<std::string>& args, const std::string& input, const Environment& environment) {
+  return run_program(SWARMDESIGN_BINARY, args, input, environment);
+}
+
+Outcome run_program(const std::string& program, const std::vector<std::string>& args, const std::string& input,
+                    const Environment& environment) {
   std::signal(SIGPIPE, SIG_IGN);  // the child may exit without reading its input
   int stdin_pipe[2];
   if (::pipe2(stdin_pipe, O_CLOEXEC) != 0) fail("pipe2");
@@ -83,7 +93,7 @@ Outcome run_swarmdesign(const std::vector<std::string>& args, const std::string&
   posix_spawn_file_actions_adddup2(&actions, stdin_pipe[0], STDIN_FILENO);
   posix_spawn_file_actions_adddup2(&actions, fileno(out), STDOUT_FILENO);
   posix_spawn_file_actions_adddup2(&actions, fileno(err), STDERR_FILENO);
-  const pid_t pid = spawn(args, environment, &actions);
+  const pid_t pid = spawn(program, args, environment, &actions);
   posix_spawn_file_actions_destroy(&actions);
 
   ::close(stdin_pipe[0]);

@@ -21,6 +21,9 @@ struct Environment {
 
 /// Runs `swarmdesign args...` with `input` written to its standard input through a pipe.
 Outcome run_swarmdesign(const std::vector<std::string>& args, const std::string& input, const Environment& environment);
+/// The same for another program (mpirun, a script), looked up on PATH unless it is a path.
+Outcome run_program(const std::string& program, const std::vector<std::string>& args, const std::string& input,
+                    const Environment& environment);
 
 /// Runs it on a pseudo-terminal: whenever the output so far ends a prompt that contains a
 /// key of `answers`, types the answer and Enter. Returns everything the terminal showed.
