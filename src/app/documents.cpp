@@ -107,7 +107,11 @@ json project_document(const storage::Project& project) {
            {"budget", project.budget ? json(*project.budget) : json()},
            {"active", project.active},
            {"created", storage::format_time(project.created_at)}};
-  if (project.cluster) out["cluster"] = {{"host", project.cluster->host}, {"user", project.cluster->user}};
+  if (project.cluster)
+    out["cluster"] = {{"host", project.cluster->host},
+                      {"user", project.cluster->user},
+                      {"folder", project.cluster->workdir_or_default()},
+                      {"binary", project.cluster->binary_or_default()}};
   return out;
 }
 

@@ -20,6 +20,11 @@ struct InvalidRequest : std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
+/// InvalidRequest(problem) unless it is empty: for the validators that return a problem's line.
+inline void require(const std::string& problem) {
+  if (!problem.empty()) throw InvalidRequest(problem);
+}
+
 /// The job's own errors are storage's: NotFound, Conflict, AccessDenied, and
 /// DesignFolderError for a design folder that cannot be used as asked.
 using storage::AccessDenied;

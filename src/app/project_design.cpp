@@ -1,5 +1,6 @@
 #include "app/project_design.hpp"
 
+#include "app/cluster_designs.hpp"
 #include "app/documents.hpp"
 #include "app/errors.hpp"
 #include "app/inputs.hpp"
@@ -26,10 +27,13 @@ ProjectDesign start_project_design(Home& home, const storage::User& user, const 
   storage::Workspace& workspace = home.workspace();
   storage::Projects projects(workspace, user);
   storage::Project project = request.project ? projects.get(*request.project) : projects.require_active();
+  if (project.cluster)
+    throw InvalidRequest("project " + project.name + " runs on a cluster: its designs are submitted to Slurm with "
+                         "swarmdesign run-design");
   storage::Designs designs(workspace, project);
   const auto latest = designs.latest();
 
-  if (latest && latest->state == storage::DesignState::interrupted && !project.cluster && !request.fresh) {
+  if (latest && latest->state == storage::DesignState::interrupted && !request.fresh) {
     PreparedDesign prepared;
     try {
       prepared = std::filesystem::exists(storage::DesignStore::file_in(latest->folder))
@@ -49,7 +53,7 @@ ProjectDesign start_project_design(Home& home, const storage::User& user, const 
 
   const std::uint64_t seed = request.seed ? *request.seed : random_seed();
   std::optional<PreparedDesign> checked;
-  if (project.mission && project.budget && !project.cluster)  // else Designs::start says what is missing
+  if (project.mission && project.budget)  // else Designs::start says what is missing
     checked = check_new_design({*project.mission, *project.budget, request.space, seed});
   const design::DesignSpaceChoice choice = checked ? checked->choice : resolve_space(request.space);
   std::optional<storage::Design> abandoned;
@@ -97,7 +101,16 @@ DesignStatus design_status(Home& home, const storage::User& user, bool complete,
   status.project = project ? projects.get(*project) : projects.require_active();
   status.design = storage::Designs(home.workspace(), status.project).latest();
   if (!status.design) return status;
+  std::optional<storage::DesignProgress> on_cluster;
+  if (status.project.cluster) {
+    on_cluster = refresh_cluster_design(home, status.project, *status.design);
+    status.cluster_job = storage::ClusterJobs(home.workspace(), status.project).find(status.design->id);
+  }
   const storage::Design& d = *status.design;
+  if (on_cluster) {
+    status.progress = *on_cluster;
+    return status;
+  }
   try {
     if (std::filesystem::exists(storage::DesignStore::file_in(d.folder))) {
       status.progress = storage::read_design_progress(d.folder);
@@ -115,6 +128,7 @@ nlohmann::json status_document(const DesignStatus& status, bool complete) {
   nlohmann::json out{{"project", status.project.name},
                      {"design", design_row_document(*status.design)},
                      {"progress", stored_progress_document(status.progress)}};
+  if (status.cluster_job) out["cluster_job"] = cluster_job_document(*status.cluster_job);
   if (complete) out["race_log"] = race_log_document(status.race_log);
   return out;
 }

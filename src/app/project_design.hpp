@@ -14,6 +14,7 @@
 
 #include "app/design_job.hpp"
 #include "app/home.hpp"
+#include "storage/cluster_jobs.hpp"
 #include "storage/design_status.hpp"
 #include "storage/designs.hpp"
 #include "storage/projects.hpp"
@@ -52,12 +53,14 @@ DesignOutcome run_project_design(ProjectDesign& design, const DesignRunOptions& 
 void hand_over(ProjectDesign& design, const std::string& new_owner);
 
 /// A project's current or last design with what its design.db says: the named project, or the
-/// active one.
+/// active one. A cluster project's running design is first brought up to date with Slurm
+/// (app/cluster_designs.hpp), and its progress read on the cluster.
 struct DesignStatus {
   storage::Project project;
   std::optional<storage::Design> design;
   storage::DesignProgress progress;
   std::vector<storage::RaceRecord> race_log;  // with `complete`
+  std::optional<storage::ClusterJob> cluster_job;  // a cluster project's design: its Slurm job
 };
 DesignStatus design_status(Home& home, const storage::User& user, bool complete,
                            const std::optional<std::string>& project = std::nullopt);

@@ -7,16 +7,6 @@
 
 namespace sd::app {
 
-namespace {
-void require(const std::string& problem) {
-  if (!problem.empty()) throw InvalidRequest(problem);
-}
-}  // namespace
-
-const char* const kClusterNotYet =
-    "Running designs on a cluster is not available yet in this version of SwarmDesign: the "
-    "connection is recorded, but designs of this project cannot be run until it is.";
-
 storage::Project create_project(Home& home, const storage::User& user, const std::string& name,
                                 const std::optional<ClusterRequest>& cluster) {
   require(storage::project_name_problem(name));
@@ -24,7 +14,9 @@ storage::Project create_project(Home& home, const storage::User& user, const std
   if (cluster) {
     require(storage::host_problem(cluster->host));
     require(storage::cluster_user_problem(cluster->user));
-    connection = storage::ClusterConnection{cluster->host, cluster->user};
+    require(storage::cluster_path_problem("cluster folder", cluster->workdir));
+    require(storage::cluster_path_problem("cluster binary", cluster->binary));
+    connection = storage::ClusterConnection{cluster->host, cluster->user, cluster->workdir, cluster->binary};
   }
   return storage::Projects(home.workspace(), user).create(name, connection);
 }
@@ -36,6 +28,11 @@ std::vector<storage::Project> list_projects(Home& home, const storage::User& use
 storage::Project select_project(Home& home, const storage::User& user, const std::string& name) {
   require(storage::project_name_problem(name));
   return storage::Projects(home.workspace(), user).select(name);
+}
+
+storage::Project set_cluster_paths(Home& home, const storage::User& user, const std::string& workdir,
+                                   const std::string& binary) {
+  return storage::Projects(home.workspace(), user).set_cluster_paths(workdir, binary);
 }
 
 storage::Project active_project(Home& home, const storage::User& user) {

@@ -13,6 +13,8 @@ namespace sd::app {
 
 struct ClusterRequest {
   std::string host, user;
+  std::string workdir;  // job folders there ("": ~/swarmdesign)
+  std::string binary;   // swarmdesign there ("": the one on its PATH)
 };
 
 /// InvalidRequest for a malformed name, host or cluster user; Conflict for a taken name.
@@ -35,7 +37,9 @@ storage::Project set_mission(Home& home, const storage::User& user, const std::s
 storage::Project create_configured_project(Home& home, const storage::User& user, const std::string& name,
                                            const std::string& mission, const std::string& budget);
 
-/// What is said of a cluster project until cluster runs exist.
-extern const char* const kClusterNotYet;
+/// Changes where the active cluster project's jobs go, or which swarmdesign runs them ("" keeps
+/// one); InvalidRequest for a local project or a path that cannot go into a job script.
+storage::Project set_cluster_paths(Home& home, const storage::User& user, const std::string& workdir,
+                                   const std::string& binary);
 
 }  // namespace sd::app

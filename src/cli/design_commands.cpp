@@ -1,4 +1,5 @@
-// Designing without an account: `design` (run or resume a design process in a folder) and
+// Designing without an account: `design` (run or resume a design process in a folder),
+// `design-status` (where a design folder stands; a cluster project asks it of its jobs) and
 // `irace-export` (let the real irace 3.5 drive SwarmDesign's evaluator).
 #include <CLI/CLI.hpp>
 
@@ -13,6 +14,8 @@
 #include "cli/command_registry.hpp"
 #include "cli/design_display.hpp"
 #include "cli/design_flags.hpp"
+#include "control/config_string.hpp"
+#include "storage/design_status.hpp"
 
 namespace sd::cli {
 namespace {
@@ -113,8 +116,37 @@ void register_irace_export(CLI::App& app) {
   cmd->callback([o] { run_irace_export(*o); });
 }
 
+void register_design_status(CLI::App& app) {
+  struct Options {
+    std::string folder;
+    bool json = false;
+  };
+  auto o = std::make_shared<Options>();
+  auto* cmd = app.add_subcommand("design-status", "Show where the design in a folder stands (also while it runs)");
+  cmd->add_option("DIR", o->folder, "the design's folder (design --out DIR)")->required();
+  cmd->add_flag("--json", o->json, "Print one JSON document");
+  cmd->footer("Example:\n  swarmdesign design-status design-aac-seed1 --json");
+  cmd->callback([o] {
+    const storage::DesignProgress p = storage::read_design_progress(o->folder);
+    if (o->json) {
+      std::cout << app::stored_progress_document(p).dump(2) << "\n";
+      return;
+    }
+    if (!p.started) {
+      std::cout << "The design in " << o->folder << " has not saved its first race step yet\n";
+      return;
+    }
+    std::cout << "Design in " << o->folder << ": " << p.phase << ", iteration " << p.iteration << " of "
+              << p.nb_iterations << ", " << p.experiments_used << " of " << p.budget << " runs used\n";
+    if (p.best)
+      std::cout << "  best so far: configuration " << p.best->id << ", mean score " << format_number(p.best->mean_score)
+                << " over " << p.best->runs << " runs\n  " << p.best->command_line << "\n";
+  });
+}
+
 const CommandRegistrar registrar{15, [](CLI::App& app, Context&) {
                                    register_design(app);
+                                   register_design_status(app);
                                    register_irace_export(app);
                                  }};
 

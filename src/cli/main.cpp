@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "cli/command_registry.hpp"
-#include "evaluation/results_version.hpp"
+#include "app/cluster_designs.hpp"
 #ifdef SWARMDESIGN_WITH_MPI
 #include "mpi/session.hpp"
 #endif
@@ -70,8 +70,7 @@ int run_command(int argc, char** argv, sd::cli::Context& context) {
   CLI::App app{"SwarmDesign: automatic modular design of robot swarms.\n"
                "Control software (--fsm-config ... / --bt-config ...) goes last on the command line.",
                "swarmdesign"};
-  app.set_version_flag("--version", std::string("swarmdesign ") + SWARMDESIGN_VERSION + " (results version " +
-                                         std::to_string(sd::kResultsVersion) + ")");
+  app.set_version_flag("--version", sd::app::version_line());
   app.require_subcommand(1);
   app.fallthrough(false);
   sd::cli::register_all_commands(app, context);

@@ -16,12 +16,17 @@
 namespace sd::cli {
 namespace {
 
-using app::kClusterNotYet;
+/// What a user of a cluster project does next.
+std::string cluster_lines(const storage::ClusterConnection& c) {
+  return "  cluster: " + c.user + "@" + c.host + ", job folders in " + c.workdir_or_default() + ", program " +
+         c.binary_or_default() + "\n  Its designs run as Slurm jobs; check the cluster side with: swarmdesign cluster-check\n";
+}
 
 struct ProjectOptions {
   std::string name;
   std::string cluster_host;
   std::string cluster_user;
+  std::string cluster_dir, cluster_binary;
   bool cluster_given = false;
   bool json = false;
 };
@@ -32,12 +37,13 @@ std::string where(const storage::Project& project) {
 
 void new_project(const ProjectOptions& options) {
   std::optional<app::ClusterRequest> cluster;
-  if (options.cluster_given) cluster = app::ClusterRequest{options.cluster_host, options.cluster_user};
+  if (options.cluster_given)
+    cluster = app::ClusterRequest{options.cluster_host, options.cluster_user, options.cluster_dir, options.cluster_binary};
   app::Home home;
   const auto project = app::create_project(home, app::signed_in_user(home), options.name, cluster);
   std::cout << "Created " << (cluster ? "cluster" : "local") << " project " << project.name << " in "
             << project.folder.string() << ".\n";
-  if (cluster) std::cout << "Cluster: " << cluster->user << "@" << cluster->host << ". " << kClusterNotYet << '\n';
+  if (project.cluster) std::cout << cluster_lines(*project.cluster);
   std::cout << "Select it with: swarmdesign select-project " << project.name << '\n';
 }
 
@@ -81,7 +87,7 @@ void print_project(const storage::Project& project) {
                                : "(not set; set it with: swarmdesign set-budget N)")
             << '\n'
             << "  folder:  " << project.folder.string() << '\n';
-  if (project.cluster) std::cout << kClusterNotYet << '\n';
+  if (project.cluster) std::cout << cluster_lines(*project.cluster);
 }
 
 void select_project(const ProjectOptions& options) {
@@ -107,14 +113,34 @@ CommandRegistrar registrar{20, [](CLI::App& app, Context&) {
       ->required();
   auto* host = create->add_option("--cluster", options->cluster_host, "run on this cluster (host name)");
   auto* user = create->add_option("--cluster-user", options->cluster_user, "your login name on the cluster");
+  auto* dir = create->add_option("--cluster-dir", options->cluster_dir,
+                                 "where job folders go on the cluster (default ~/swarmdesign)");
+  auto* binary = create->add_option("--cluster-binary", options->cluster_binary,
+                                    "the swarmdesign program on the cluster (default: the one on its PATH)");
   host->needs(user);
   user->needs(host);
-  create->footer(std::string("The project's folder is $SWARMDESIGN_HOME/users/USER/projects/NAME. ") + kClusterNotYet +
-                 "\n\nExample:\n  swarmdesign new-project aggregation\n"
-                 "  swarmdesign new-project big-run --cluster hpc.example.org --cluster-user alice");
+  dir->needs(host);
+  binary->needs(host);
+  create->footer("The project's folder is $SWARMDESIGN_HOME/users/USER/projects/NAME. A cluster project runs its\n"
+                 "designs as Slurm jobs: submitted on this machine when it is the cluster's login node (HOST is\n"
+                 "localhost or this machine's name), over ssh otherwise ($SWARMDESIGN_SSH replaces ssh).\n\n"
+                 "Example:\n  swarmdesign new-project aggregation\n"
+                 "  swarmdesign new-project big-run --cluster hpc.example.org --cluster-user alice\n"
+                 "  swarmdesign cluster-check");
   create->callback([options, host] {
     options->cluster_given = host->count() > 0;
     new_project(*options);
+  });
+
+  auto* set_cluster = app.add_subcommand("set-cluster", "Change where the active cluster project's jobs run from");
+  set_cluster->add_option("--cluster-dir", options->cluster_dir, "where job folders go on the cluster");
+  set_cluster->add_option("--cluster-binary", options->cluster_binary, "the swarmdesign program on the cluster");
+  set_cluster->footer("Example:\n  swarmdesign set-cluster --cluster-binary /opt/swarmdesign/bin/swarmdesign");
+  set_cluster->callback([options] {
+    if (options->cluster_dir.empty() && options->cluster_binary.empty())
+      throw UsageError("give --cluster-dir, --cluster-binary or both");
+    app::Home home;
+    print_project(app::set_cluster_paths(home, app::signed_in_user(home), options->cluster_dir, options->cluster_binary));
   });
 
   auto* show = app.add_subcommand("show-projects", "List your projects (* marks the active one)");

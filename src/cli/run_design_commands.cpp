@@ -9,12 +9,15 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "app/accounts.hpp"
+#include "app/cluster_designs.hpp"
 #include "app/documents.hpp"
 #include "app/evaluation_job.hpp"
 #include "app/inputs.hpp"
 #include "app/project_design.hpp"
+#include "app/projects.hpp"
 #include "cli/command_registry.hpp"
 #include "cli/control_software_input.hpp"
 #include "cli/design_display.hpp"
@@ -31,6 +34,7 @@ struct RunDesignOptions {
   unsigned threads = 0;
   bool detach = false;
   bool fresh = false;  // --new: give up an interrupted design instead of resuming it
+  app::ClusterJobRequest job;  // a cluster project's sbatch settings
 };
 
 /// This process's lease owner for a design it runs.
@@ -99,12 +103,43 @@ void detach(app::ProjectDesign& d, unsigned threads) {
             << "  its log:   " << log.string() << "\n";
 }
 
-void run_design(const RunDesignOptions& o) {
+/// A cluster project's design goes to Slurm: submitted, or submitted again to resume.
+void submit(app::Home& home, const RunDesignOptions& o) {
+  app::ProjectDesignRequest request;
+  request.space = o.flags.request();
+  request.space_given = o.flags.any() || !o.seed.empty();
+  if (!o.seed.empty()) request.seed = app::parse_seed(o.seed);
+  request.fresh = o.fresh;
+  const app::ClusterSubmission s = app::submit_cluster_design(home, app::signed_in_user(home), request, o.job);
+  const storage::Design& d = s.design;
+  if (s.resubmitted)
+    std::cout << "Design " << d.id << " of " << s.project.name << " was interrupted; submitted again, it resumes from its "
+              << "last checkpoint" << (request.space_given ? " with the settings it started with" : "") << ".\n";
+  else
+    std::cout << "Design " << d.id << " of " << s.project.name << ": mission " << d.mission << ", budget " << d.budget
+              << ", seed " << d.seed << ", " << d.architectures << " / " << d.flavours << ".\n";
+  std::cout << "Submitted to Slurm as job " << s.job.job_id << " on " << s.where << "; its folder there: " << s.job.folder
+            << "\n  watch it:  swarmdesign status\n  stop it:   swarmdesign stop-design\n";
+}
+
+void run_design(const RunDesignOptions& o, int mpi_ranks) {
   // The home's database connection is closed before a fork: SQLite connections must not cross one.
-  app::ProjectDesign d = [&] {
+  std::optional<app::ProjectDesign> started;
+  {
     app::Home home;
-    return start(home, o);
-  }();
+    if (app::active_project(home, app::signed_in_user(home)).cluster) {
+      if (o.detach) throw UsageError("--detach is for a local project: a cluster project's design runs as a Slurm job anyway");
+      return submit(home, o);
+    }
+    if (o.job.given())
+      throw UsageError("--nodes, --ntasks, --cpus-per-task, --time, --partition and --account are for a cluster project; "
+                       "this one runs on this machine");
+    // A forked child would leave the MPI job behind: mpirun waits for rank 0 anyway.
+    if (o.detach && mpi_ranks > 1)
+      throw UsageError("--detach cannot be used under mpirun (mpirun waits for its ranks); leave it out");
+    started.emplace(start(home, o));
+  }
+  app::ProjectDesign& d = *started;
   if (o.detach) return detach(d, o.threads);
   run_and_report(d, o.threads, ProgressLine::terminal_if(true));
 }
@@ -144,13 +179,19 @@ CommandRegistrar registrar{40, [](CLI::App& app, Context& context) {
       "interrupted (killed, machine restarted), run-design resumes it with the settings it started with\n"
       "and it ends exactly as if it had never stopped; when it cannot be resumed (its mission was edited,\n"
       "or it was begun by a swarmdesign whose runs score differently), --new gives it up and starts anew.\n\n"
-      "Example:\n  swarmdesign run-design --fsm --chocolate --seed 1\n  swarmdesign run-design --detach");
-  cmd->callback([run, &context] {
-    // A forked child would leave the MPI job behind: mpirun waits for rank 0 anyway.
-    if (run->detach && context.mpi_ranks > 1)
-      throw UsageError("--detach cannot be used under mpirun (mpirun waits for its ranks); leave it out");
-    run_design(*run);
-  });
+      "In a cluster project (new-project --cluster) the design is written as an sbatch script and\n"
+      "submitted as a Slurm job, with the Slurm options above; status follows it, stop-design cancels\n"
+      "it, and run-design submits an interrupted one again (it resumes from its last checkpoint).\n\n"
+      "Example:\n  swarmdesign run-design --fsm --chocolate --seed 1\n  swarmdesign run-design --detach\n"
+      "  swarmdesign run-design --ntasks 64 --time 4:00:00 --partition batch   (cluster project)");
+  auto* slurm = cmd->add_option_group("Cluster project (Slurm)");
+  slurm->add_option("--nodes", run->job.nodes, "Nodes of the job (sbatch --nodes)");
+  slurm->add_option("--ntasks", run->job.ntasks, "Tasks of the job: one MPI rank each; rank 0 races (sbatch --ntasks)");
+  slurm->add_option("--cpus-per-task", run->job.cpus_per_task, "Threads of each task (sbatch --cpus-per-task; default 1)");
+  slurm->add_option("--time", run->job.time, "Time limit, e.g. 2:00:00 or 1-12 (sbatch --time)");
+  slurm->add_option("--partition", run->job.partition, "Partition (sbatch --partition)");
+  slurm->add_option("--account", run->job.account, "Account charged (sbatch --account)");
+  cmd->callback([run, &context] { run_design(*run, context.mpi_ranks); });
 
   auto test = std::make_shared<TestDesignOptions>();
   auto* tcmd = app.add_subcommand("test-design", "Evaluate control software on the active project's mission");

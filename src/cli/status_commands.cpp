@@ -91,10 +91,18 @@ void status(const StatusOptions& o) {
     return;
   }
   const storage::Design& d = *status.design;
+  const auto& job = status.cluster_job;
   std::cout << "Design " << d.id << " of " << status.project.name << ": " << storage::to_string(d.state);
-  if (d.state == storage::DesignState::running) std::cout << " (process " << d.pid << ")";
+  if (d.state == storage::DesignState::running && !job) std::cout << " (process " << d.pid << ")";
   std::cout << "\n  mission " << d.mission << ", budget " << d.budget << ", seed " << d.seed << ", " << d.architectures
             << " / " << d.flavours << "\n  folder " << d.folder.string() << "\n";
+  if (job) {
+    std::cout << "  Slurm job " << (job->job_id.empty() ? "(not submitted)" : job->job_id);
+    if (!job->slurm_state.empty()) std::cout << ": " << job->slurm_state;
+    std::cout << " on " << status.project.cluster->user << "@" << status.project.cluster->host << ", folder "
+              << job->folder << "\n";
+    if (!job->note.empty()) std::cout << "  " << job->note << "\n";
+  }
   print_progress(d, status.progress);
   if (d.state == storage::DesignState::interrupted)
     std::cout << "It was interrupted; continue it with: swarmdesign run-design\n";

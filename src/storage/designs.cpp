@@ -77,8 +77,6 @@ void Designs::mark_dead_designs_interrupted() {
 }
 
 Design Designs::start(const DesignRequest& request) {
-  if (project_.cluster)
-    throw Conflict("project " + project_.name + " runs on a cluster, and running designs on a cluster is not available yet");
   if (!project_.mission) throw NotFound("project " + project_.name + " has no mission; choose one with: swarmdesign set-mission");
   if (!project_.budget) throw NotFound("project " + project_.name + " has no budget; set one with: swarmdesign set-budget N");
   if (request.architectures.empty() || request.flavours.empty())

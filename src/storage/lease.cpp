@@ -84,6 +84,8 @@ Owner local_owner(std::int64_t pid, const std::string& job) {
 
 bool owner_alive(const std::string& owner_text, std::int64_t heartbeat_at, std::int64_t now, std::int64_t legacy_pid) {
   if (owner_text.empty()) return process_alive(legacy_pid, "");
+  // A Slurm job: Slurm tells whether it still runs (app/cluster_designs asks it).
+  if (owner_text.rfind(kSlurmOwnerPrefix, 0) == 0) return true;
   const auto owner = Owner::parse(owner_text);
   if (!owner) return false;
   if (owner->boot_id.empty() || owner->boot_id == this_boot_id()) return process_alive(owner->pid, owner->start_time);

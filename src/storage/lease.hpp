@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace sd::storage {
 
@@ -28,6 +29,10 @@ struct Owner {
   std::string text() const;
   static std::optional<Owner> parse(const std::string& text);
 };
+
+/// Owners of designs that run as Slurm jobs are "slurm:<job id>@<host>": no process here, no
+/// heartbeat; their liveness is the job's state, which only Slurm knows.
+inline constexpr std::string_view kSlurmOwnerPrefix = "slurm:";
 
 /// The owner for job `job` of process `pid` on this machine (pid 0: this process). Its boot
 /// id and start time are empty when /proc cannot tell (the pid alone then decides).

@@ -11,7 +11,7 @@ namespace {
 // ?1 is always the owner.
 constexpr std::string_view kSelectProjects =
     "SELECT p.id, p.name, p.path, p.mission, p.budget, c.host, c.user_name, p.created_at, "
-    "       a.project_id IS NOT NULL "
+    "       a.project_id IS NOT NULL, p.cluster_workdir, p.cluster_binary "
     "FROM projects p "
     "LEFT JOIN cluster_connections c ON c.id = p.cluster_id "
     "LEFT JOIN active_projects a ON a.user_id = p.owner_id AND a.project_id = p.id "
@@ -24,7 +24,9 @@ Project read_project(const Statement& row, const Workspace& workspace) {
   project.folder = workspace.resolve(row.text(2));
   if (!row.is_null(3)) project.mission = row.text(3);
   if (!row.is_null(4)) project.budget = row.integer(4);
-  if (!row.is_null(5)) project.cluster = ClusterConnection{row.text(5), row.text(6)};
+  if (!row.is_null(5))
+    project.cluster = ClusterConnection{row.text(5), row.text(6), row.is_null(9) ? "" : row.text(9),
+                                        row.is_null(10) ? "" : row.text(10)};
   project.created_at = row.integer(7);
   project.active = row.integer(8) != 0;
   return project;
@@ -58,6 +60,8 @@ Project Projects::create(std::string_view name, const std::optional<ClusterConne
   if (cluster) {
     if (auto problem = host_problem(cluster->host); !problem.empty()) throw InvalidInput(problem);
     if (auto problem = cluster_user_problem(cluster->user); !problem.empty()) throw InvalidInput(problem);
+    if (auto problem = cluster_path_problem("cluster folder", cluster->workdir); !problem.empty()) throw InvalidInput(problem);
+    if (auto problem = cluster_path_problem("cluster binary", cluster->binary); !problem.empty()) throw InvalidInput(problem);
   }
   Database& db = workspace_.database();
   const std::filesystem::path relative = Workspace::projects_folder(owner_) / std::string(name);
@@ -66,13 +70,18 @@ Project Projects::create(std::string_view name, const std::optional<ClusterConne
   if (query_one("AND p.name = ?2", name))
     throw Conflict("you already have a project named '" + std::string(name) + "'");
   auto insert = db.prepare(
-      "INSERT INTO projects (owner_id, name, path, location, cluster_id, created_at) VALUES (?, ?, ?, ?, ?, ?)");
+      "INSERT INTO projects (owner_id, name, path, location, cluster_id, created_at, cluster_workdir, cluster_binary) "
+      "VALUES (?, ?, ?, ?, ?, ?, ?, ?)");
   insert.bind(1, owner_.id).bind(2, name).bind(3, relative.string()).bind(4, cluster ? "cluster" : "local");
   if (cluster)
     insert.bind(5, cluster_connection_id(db, owner_.id, *cluster));
   else
     insert.bind_null(5);
-  insert.bind(6, unix_now()).run();
+  insert.bind(6, unix_now());
+  for (const auto& [column, value] : {std::pair{7, cluster ? cluster->workdir : ""}, std::pair{8, cluster ? cluster->binary : ""}})
+    if (value.empty()) insert.bind_null(column);
+    else insert.bind(column, value);
+  insert.run();
 
   // The folder last, just before the commit: a refused project leaves nothing behind. A
   // folder left by an earlier project of the same name is reused.
@@ -142,6 +151,21 @@ Project Projects::set_mission(const std::string& mission) {
   const Project project = require_active();
   db.prepare("UPDATE projects SET mission = ? WHERE id = ? AND owner_id = ?")
       .bind(1, mission).bind(2, project.id).bind(3, owner_.id).run();
+  transaction.commit();
+  return get(project.name);
+}
+
+Project Projects::set_cluster_paths(const std::string& workdir, const std::string& binary) {
+  if (auto problem = cluster_path_problem("cluster folder", workdir); !problem.empty()) throw InvalidInput(problem);
+  if (auto problem = cluster_path_problem("cluster binary", binary); !problem.empty()) throw InvalidInput(problem);
+  Database& db = workspace_.database();
+  Transaction transaction(db);
+  const Project project = require_active();
+  if (!project.cluster)
+    throw InvalidInput("project " + project.name + " runs on this machine; only a cluster project has cluster settings");
+  db.prepare("UPDATE projects SET cluster_workdir = coalesce(nullif(?, ''), cluster_workdir), "
+             "cluster_binary = coalesce(nullif(?, ''), cluster_binary) WHERE id = ? AND owner_id = ?")
+      .bind(1, workdir).bind(2, binary).bind(3, project.id).bind(4, owner_.id).run();
   transaction.commit();
   return get(project.name);
 }

@@ -16,6 +16,10 @@ namespace sd::storage {
 struct ClusterConnection {
   std::string host;
   std::string user;
+  std::string workdir;  // job folders on the cluster ("": ~/swarmdesign)
+  std::string binary;   // the swarmdesign program there ("": the one on its PATH)
+  std::string workdir_or_default() const { return workdir.empty() ? "~/swarmdesign" : workdir; }
+  std::string binary_or_default() const { return binary.empty() ? "swarmdesign" : binary; }
 };
 
 struct Project {
@@ -45,6 +49,8 @@ class Projects {
 
   Project set_budget(std::int64_t budget);
   Project set_mission(const std::string& mission);
+  /// Where the active (cluster) project's jobs go and which program runs them; "" keeps one.
+  Project set_cluster_paths(const std::string& workdir, const std::string& binary);
 
  private:
   std::optional<Project> query_one(std::string_view condition, std::string_view value);

@@ -162,6 +162,22 @@ CREATE TABLE experiment_assessments (
   PRIMARY KEY (design_id, seed)
 );
 )sql",
+    // 5: designs run on a cluster (a project's cluster connection): where and with what they
+    // run there, and the Slurm job that runs each one.
+    R"sql(
+ALTER TABLE projects ADD COLUMN cluster_workdir TEXT;  -- job folders on the cluster; NULL: ~/swarmdesign
+ALTER TABLE projects ADD COLUMN cluster_binary TEXT;   -- swarmdesign there; NULL: the one on its PATH
+CREATE TABLE cluster_jobs (
+  design_id    INTEGER PRIMARY KEY REFERENCES designs(id) ON DELETE CASCADE,
+  job_id       TEXT,              -- Slurm's, of the last submission (NULL: none accepted yet)
+  folder       TEXT    NOT NULL,  -- the job's folder on the cluster
+  settings     TEXT    NOT NULL,  -- sbatch settings (JSON), reused when the design is submitted again
+  slurm_state  TEXT,              -- as Slurm last told it
+  note         TEXT,              -- the last problem, one line (unreachable host, time limit, ...)
+  submitted_at INTEGER NOT NULL,
+  checked_at   INTEGER
+);
+)sql",
 };
 
 }  // namespace

@@ -54,6 +54,18 @@ std::string cluster_user_problem(std::string_view user) {
   return {};
 }
 
+std::string cluster_path_problem(std::string_view what, std::string_view path) {
+  if (path.empty()) return {};
+  if (path.size() > 1024) return std::string(what) + " is longer than 1024 characters";
+  const bool plain = std::all_of(path.begin(), path.end(), [](char c) {
+    return static_cast<unsigned char>(c) >= 0x20 && c != 0x7f && c != '\'' && c != '"' && c != '$' && c != '`' && c != '\\';
+  });
+  if (!plain || path.front() == '-')
+    return std::string(what) + " " + in_quotes(path) +
+           " is not valid: no quotes, '$', '`', backslashes or control characters, and no leading '-'";
+  return {};
+}
+
 std::optional<std::int64_t> parse_positive_integer(std::string_view text) {
   if (text.empty() || !std::all_of(text.begin(), text.end(), is_digit)) return std::nullopt;
   std::int64_t value = 0;

@@ -22,6 +22,9 @@ std::string host_problem(std::string_view host);
 
 /// A login name on a cluster: letters, digits, '.', '_' or '-', not starting with '-'.
 std::string cluster_user_problem(std::string_view user);
+/// A path on a cluster (its job folder, its swarmdesign program): "" (the default) or a path
+/// of printable characters without quotes, '$', '`', '\\' or newlines (it goes into job scripts).
+std::string cluster_path_problem(std::string_view what, std::string_view path);
 
 /// Decimal digits only, no sign, at least 1, fits in 64 bits; nullopt otherwise.
 std::optional<std::int64_t> parse_positive_integer(std::string_view text);

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include "storage/accounts.hpp"
+#include "storage/cluster_jobs.hpp"
 #include "storage/designs.hpp"
 #include "storage/errors.hpp"
 #include "storage/clock.hpp"
@@ -171,20 +172,36 @@ TEST(DesignLease, OwnersReadBackAndNameThisProcess) {
   EXPECT_FALSE(storage::owner_alive(owner_of(kDeadPid), storage::unix_now(), storage::unix_now(), 0));
 }
 
-TEST_F(workflow_designs, ClusterProjectsAndUnconfiguredProjectsCannotStartADesign) {
+TEST_F(workflow_designs, UnconfiguredProjectsCannotStartADesign) {
+  EXPECT_THROW(storage::Designs(workspace(), project("bare", false)).start(request(me())), storage::NotFound);
+  EXPECT_EQ(query("SELECT count(*) FROM designs"), "0");
+}
+
+TEST_F(workflow_designs, ASlurmJobOwnsItsDesignUntilTheJobIsSeenToEnd) {
   storage::Projects projects(workspace(), owner());
-  projects.create("remote", storage::ClusterConnection{"hpc.example.org", "al"});
+  projects.create("remote", storage::ClusterConnection{"hpc.example.org", "al", "/scratch/al", ""});
   projects.select("remote");
   projects.set_mission("aac");
   projects.set_budget(10);
-  try {
-    storage::Designs(workspace(), projects.get("remote")).start(request(me()));
-    FAIL() << "a cluster project started a design";
-  } catch (const storage::Conflict& e) {
-    EXPECT_NE(std::string(e.what()).find("not available yet"), std::string::npos);
-  }
-  EXPECT_THROW(storage::Designs(workspace(), project("bare", false)).start(request(me())), storage::NotFound);
-  EXPECT_EQ(query("SELECT count(*) FROM designs"), "0");
+  const storage::Project remote = projects.get("remote");
+  EXPECT_EQ(remote.cluster->workdir_or_default(), "/scratch/al");
+  EXPECT_EQ(remote.cluster->binary_or_default(), "swarmdesign");
+  auto request_of_job = request(me());
+  request_of_job.owner = "slurm:42@hpc.example.org";
+  storage::Designs designs(workspace(), remote);
+  const storage::Design d = designs.start(request_of_job);
+  // No process here and no heartbeat: still running, until Slurm says otherwise.
+  EXPECT_EQ(designs.latest()->state, storage::DesignState::running);
+  storage::ClusterJobs jobs(workspace(), remote);
+  jobs.submitted(d.id, "42", "/scratch/al/x/design-1", "{\"ntasks\":4}");
+  jobs.observed(d.id, "TIMEOUT", "Slurm job 42 reached its time limit");
+  const auto job = jobs.find(d.id);
+  ASSERT_TRUE(job);
+  EXPECT_EQ(job->job_id, "42");
+  EXPECT_EQ(job->slurm_state, "TIMEOUT");
+  EXPECT_EQ(job->note, "Slurm job 42 reached its time limit");
+  // Another project's jobs are not reachable through this one.
+  EXPECT_FALSE(storage::ClusterJobs(workspace(), project("other")).find(d.id));
 }
 
 TEST_F(workflow_designs, SeedsKeepAll64Bits) {

@@ -93,19 +93,33 @@ TEST_F(workflow_projects, TwoUsersNeverSeeEachOthersProjects) {
   EXPECT_EQ(nlohmann::json::parse(run_ok({"active-project", "--json"}))["budget"], 5000);
 }
 
-TEST_F(workflow_projects, AClusterProjectIsRecordedAndSaysRunningThereIsNotAvailable) {
+TEST_F(workflow_projects, AClusterProjectIsRecordedWithWhereItsJobsRun) {
   sign_up("alice", "correct horse battery");
   sign_in("alice", "correct horse battery");
   const std::string out = run_ok({"new-project", "big", "--cluster", "hpc.example.org", "--cluster-user", "al"});
-  EXPECT_NE(out.find("not available yet"), std::string::npos) << out;
+  EXPECT_NE(out.find("job folders in ~/swarmdesign"), std::string::npos) << out;
+  EXPECT_NE(out.find("swarmdesign cluster-check"), std::string::npos) << out;
   EXPECT_EQ(query("SELECT host || ' ' || user_name FROM cluster_connections"), "hpc.example.org al");
   EXPECT_EQ(query("SELECT location FROM projects"), "cluster");
 
   run_ok({"select-project", "big"});
-  EXPECT_NE(run_ok({"active-project"}).find("not available yet"), std::string::npos);
+  EXPECT_NE(run_ok({"active-project"}).find("cluster: al@hpc.example.org"), std::string::npos);
   const auto project = nlohmann::json::parse(run_ok({"active-project", "--json"}));
   EXPECT_EQ(project["cluster"]["host"], "hpc.example.org");
   EXPECT_EQ(project["cluster"]["user"], "al");
+  EXPECT_EQ(project["cluster"]["binary"], "swarmdesign");
+
+  // Where its jobs go and which program runs them can change; a path that would break out of
+  // a job script's quoting is refused before anything is written.
+  run_ok({"set-cluster", "--cluster-dir", "/scratch/al", "--cluster-binary", "~/bin/swarmdesign"});
+  const auto changed = nlohmann::json::parse(run_ok({"active-project", "--json"}));
+  EXPECT_EQ(changed["cluster"]["folder"], "/scratch/al");
+  EXPECT_EQ(changed["cluster"]["binary"], "~/bin/swarmdesign");
+  const std::string before = snapshot();
+  expect_error(run({"set-cluster", "--cluster-dir", "/x'; rm -rf ~; '"}), 2, "cluster folder");
+  expect_error(run({"new-project", "b3", "--cluster", "h", "--cluster-user", "al", "--cluster-binary", "$(boom)"}), 2,
+               "cluster binary");
+  EXPECT_EQ(snapshot(), before);
 
   // A second project on the same cluster reuses the connection.
   run_ok({"new-project", "big2", "--cluster", "hpc.example.org", "--cluster-user", "al"});

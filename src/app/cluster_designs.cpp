@@ -1,0 +1,395 @@
+#include "app/cluster_designs.hpp"
+
+#include <signal.h>
+
+#include <chrono>
+#include <thread>
+
+#include "app/errors.hpp"
+#include "app/inputs.hpp"
+#include "cluster/slurm.hpp"
+#include "cluster/transfer.hpp"
+#include "design/design_space.hpp"
+#include "missions/catalogue.hpp"
+#include "evaluation/results_version.hpp"
+#include "storage/design_store.hpp"
+#include "storage/lease.hpp"
+
+#ifndef SWARMDESIGN_VERSION
+#define SWARMDESIGN_VERSION "dev"
+#endif
+
+namespace sd::app {
+
+namespace {
+
+using nlohmann::json;
+
+cluster::Shell shell_of(const storage::Project& project) {
+  return cluster::Shell::for_cluster(project.cluster->host, project.cluster->user);
+}
+
+std::string slurm_owner(const std::string& job_id, const storage::Project& project) {
+  return std::string(storage::kSlurmOwnerPrefix) + job_id + "@" + project.cluster->host;
+}
+
+json settings_document(const ClusterJobRequest& r) {
+  json out = json::object();
+  if (r.nodes) out["nodes"] = *r.nodes;
+  if (r.ntasks) out["ntasks"] = *r.ntasks;
+  if (r.cpus_per_task) out["cpus_per_task"] = *r.cpus_per_task;
+  if (!r.time.empty()) out["time"] = r.time;
+  if (!r.partition.empty()) out["partition"] = r.partition;
+  if (!r.account.empty()) out["account"] = r.account;
+  return out;
+}
+
+/// The settings of the last submission, with those given now taking their place.
+ClusterJobRequest merged(const std::string& stored, const ClusterJobRequest& given) {
+  ClusterJobRequest r;
+  const json s = stored.empty() ? json::object() : json::parse(stored);
+  if (s.contains("nodes")) r.nodes = s["nodes"].get<int>();
+  if (s.contains("ntasks")) r.ntasks = s["ntasks"].get<int>();
+  if (s.contains("cpus_per_task")) r.cpus_per_task = s["cpus_per_task"].get<int>();
+  r.time = s.value("time", "");
+  r.partition = s.value("partition", "");
+  r.account = s.value("account", "");
+  if (given.nodes) r.nodes = given.nodes;
+  if (given.ntasks) r.ntasks = given.ntasks;
+  if (given.cpus_per_task) r.cpus_per_task = given.cpus_per_task;
+  if (!given.time.empty()) r.time = given.time;
+  if (!given.partition.empty()) r.partition = given.partition;
+  if (!given.account.empty()) r.account = given.account;
+  return r;
+}
+
+void check(const ClusterJobRequest& r) {
+  for (const auto& [name, value] : {std::pair{"--nodes", r.nodes}, {"--ntasks", r.ntasks}, {"--cpus-per-task", r.cpus_per_task}})
+    if (value && *value < 1) throw InvalidRequest(std::string(name) + " must be at least 1");
+  require(cluster::time_problem(r.time));
+  require(cluster::partition_problem(r.partition));
+  require(cluster::account_problem(r.account));
+}
+
+std::string flags_of(const std::string& comma_list) {
+  std::string out;
+  for (const auto& name : design::split_list(comma_list)) out += " --" + name;
+  return out;
+}
+
+/// The job: the design started in design/ or, when design/ already holds one (a job submitted
+/// again), resumed from its last checkpoint. Several tasks run it under mpirun (rank 0 races);
+/// each task evaluates on the CPUs Slurm gave it.
+std::string job_body(const std::string& folder, const storage::Design& d, const std::string& binary, bool mpi) {
+  const std::string q = cluster::shell_quote(folder);
+  return "set -u\n"
+         "cd " + q + " || exit 1\n"
+         "if [ -f design/design.db ]; then\n"
+         "  set -- design --resume \"$PWD/design\"\n"
+         "else\n"
+         "  set -- design --mission \"$PWD/mission.json\" --budget " + std::to_string(d.budget) +
+         " --seed " + std::to_string(d.seed) + flags_of(d.architectures) + flags_of(d.flavours) +
+         " --out \"$PWD/design\"\n"
+         "fi\n" +
+         (mpi ? "mpirun " : "") + cluster::shell_path(binary) +
+         " \"$@\" --threads \"${SLURM_CPUS_PER_TASK:-1}\" --json > result.part && mv result.part result.json\n";
+}
+
+/// Writes the job's files (the folder made absolute there) and submits it: the job id.
+std::string submit_job(const cluster::Shell& shell, const storage::Project& project, const storage::Design& d,
+                       const std::string& folder, const std::string& mission_document, const ClusterJobRequest& r) {
+  cluster::JobSettings settings;
+  settings.job_name = "sd-" + project.name + "-" + std::to_string(d.id);
+  settings.nodes = r.nodes;
+  settings.ntasks = r.ntasks;
+  settings.cpus_per_task = r.cpus_per_task;
+  settings.time = r.time;
+  settings.partition = r.partition;
+  settings.account = r.account;
+  settings.output = folder + "/slurm-%j.out";
+  settings.workdir = folder;
+  const bool mpi = (r.ntasks && *r.ntasks > 1) || (r.nodes && *r.nodes > 1);
+  if (!mission_document.empty()) cluster::write_file(shell, folder + "/mission.json", mission_document);
+  const std::string body = job_body(folder, d, project.cluster->binary_or_default(), mpi);
+  cluster::write_file(shell, folder + "/job.sh", cluster::sbatch_script(settings, body), true);
+  return cluster::submit(shell, folder + "/job.sh");
+}
+
+std::string planned_job_folder(const storage::Project& project, const storage::User& user, std::int64_t design_id) {
+  return project.cluster->workdir_or_default() + "/" + user.name + "/" + project.name + "/design-" +
+         std::to_string(design_id);
+}
+
+/// The job's folder on the cluster, created, as an absolute path there.
+std::string make_job_folder(const cluster::Shell& shell, const storage::Project& project, const storage::User& user,
+                            std::int64_t design_id) {
+  const std::string folder = planned_job_folder(project, user, design_id);
+  const std::string q = cluster::shell_path(folder);
+  const auto made = shell.run_checked("mkdir -p " + q + " && cd " + q + " && pwd");
+  if (made.exit_code != 0)
+    throw cluster::ClusterError("cannot create " + folder + " on " + shell.describe() + ": " + cluster::first_line(made.err));
+  return cluster::first_line(made.out);
+}
+
+std::string last_line(const std::string& text) {
+  auto end = text.find_last_not_of(" \n\r\t");
+  if (end == std::string::npos) return "";
+  const auto start = text.rfind('\n', end);
+  return text.substr(start == std::string::npos ? 0 : start + 1, end - (start == std::string::npos ? 0 : start + 1) + 1);
+}
+
+/// One line on a job that ended before its design finished.
+std::string ended_note(const cluster::Shell& shell, const storage::ClusterJob& job, const cluster::JobStatus& status) {
+  const std::string again = "; run-design submits it again and it resumes from its last checkpoint";
+  const std::string log = job.folder + "/slurm-" + job.job_id + ".out";
+  std::string said;
+  try {
+    if (const auto text = cluster::read_file(shell, log)) said = last_line(*text);
+  } catch (const cluster::ClusterError&) {
+  }
+  const std::string j = "Slurm job " + job.job_id;
+  switch (status.state) {
+    case cluster::JobState::timeout: return j + " reached its time limit before the design finished" + again;
+    case cluster::JobState::cancelled: return j + " was cancelled" + (status.reason.empty() ? "" : " (" + status.reason + ")") + again;
+    case cluster::JobState::unknown: return "Slurm no longer knows job " + job.job_id + " and it left no result" + again;
+    default: break;
+  }
+  std::string note = j + " ended (" + status.slurm_state + ", exit code " + std::to_string(status.exit_code) +
+                     ") before the design finished";
+  if (!said.empty()) note += ": " + said;
+  return note + " (log: " + log + ")" + again;
+}
+
+std::optional<storage::DesignProgress> progress_there(const cluster::Shell& shell, const storage::Project& project,
+                                                      const std::string& folder) {
+  const std::string design = folder + "/design";
+  try {
+    if (shell.local()) {
+      const auto path = cluster::local_path(design);
+      if (!std::filesystem::exists(storage::DesignStore::file_in(path))) return std::nullopt;
+      return storage::read_design_progress(path);
+    }
+    const auto out = shell.run_checked(cluster::shell_path(project.cluster->binary_or_default()) + " design-status " +
+                                       cluster::shell_quote(design) + " --json");
+    if (out.exit_code != 0) return std::nullopt;  // no checkpoint yet
+    return stored_progress_from_document(json::parse(out.out));
+  } catch (const std::exception&) {
+    return std::nullopt;  // a checkpoint being written; the next status reads it
+  }
+}
+
+storage::Design reread(Home& home, const storage::Project& project, std::int64_t id) {
+  for (const auto& d : storage::Designs(home.workspace(), project).list())
+    if (d.id == id) return d;
+  throw NotFound("design " + std::to_string(id) + " is gone");
+}
+
+storage::Project the_project(Home& home, const storage::User& user, const std::optional<std::string>& name) {
+  storage::Projects projects(home.workspace(), user);
+  return name ? projects.get(*name) : projects.require_active();
+}
+
+}  // namespace
+
+bool ClusterJobRequest::given() const {
+  return nodes || ntasks || cpus_per_task || !time.empty() || !partition.empty() || !account.empty();
+}
+
+bool ClusterCheckReport::ok() const {
+  for (const auto& c : checks)
+    if (!c.ok) return false;
+  return true;
+}
+
+std::string version_line() {
+  return std::string("swarmdesign ") + SWARMDESIGN_VERSION + " (results version " + std::to_string(kResultsVersion) + ")";
+}
+
+ClusterSubmission submit_cluster_design(Home& home, const storage::User& user, const ProjectDesignRequest& request,
+                                        const ClusterJobRequest& given) {
+  check(given);
+  storage::Workspace& workspace = home.workspace();
+  const storage::Project project = the_project(home, user, request.project);
+  if (!project.cluster)
+    throw InvalidRequest("project " + project.name + " runs on this machine; --nodes, --ntasks, --cpus-per-task, --time, "
+                         "--partition and --account are for a cluster project");
+  storage::Designs designs(workspace, project);
+  storage::ClusterJobs jobs(workspace, project);
+  const cluster::Shell shell = shell_of(project);
+
+  auto latest = designs.latest();
+  if (latest && latest->state == storage::DesignState::running) {
+    refresh_cluster_design(home, project, *latest);
+    if (latest->state == storage::DesignState::running) {
+      const auto job = jobs.find(latest->id);
+      throw Conflict("design " + std::to_string(latest->id) + " of " + project.name + " is still running" +
+                     (job && !job->job_id.empty() ? " as Slurm job " + job->job_id : "") +
+                     "; watch it with: swarmdesign status (stop it with: swarmdesign stop-design)");
+    }
+  }
+
+  ClusterSubmission out{project, {}, {}, false, shell.describe()};
+  const auto previous = latest ? jobs.find(latest->id) : std::nullopt;
+  if (latest && latest->state == storage::DesignState::interrupted && previous && !request.fresh) {
+    // Submitted again: the job resumes the design from the checkpoint in its folder.
+    const ClusterJobRequest settings = merged(previous->settings, given);
+    check(settings);
+    out.design = designs.resume(latest->id, std::string(storage::kSlurmOwnerPrefix) + "submitting");
+    out.resubmitted = !previous->job_id.empty();
+    try {
+      // A first submission that never reached Slurm (an unreachable host, say) is made anew.
+      const bool never_submitted = previous->job_id.empty();
+      const std::string folder = never_submitted ? make_job_folder(shell, project, user, out.design.id) : previous->folder;
+      const std::string mission = never_submitted ? load_mission(out.design.mission).document : "";
+      const std::string job_id = submit_job(shell, project, out.design, folder, mission, settings);
+      jobs.submitted(out.design.id, job_id, folder, settings_document(settings).dump());
+      designs.set_owner(out.design.id, slurm_owner(job_id, project));
+    } catch (const cluster::ClusterError& e) {
+      designs.release(out.design.id, out.design.owner);
+      jobs.observed(out.design.id, "", e.what());
+      throw;
+    }
+  } else {
+    const std::uint64_t seed = request.seed ? *request.seed : random_seed();
+    if (!project.mission) throw NotFound("project " + project.name + " has no mission; choose one with: swarmdesign set-mission");
+    if (!project.budget) throw NotFound("project " + project.name + " has no budget; set one with: swarmdesign set-budget N");
+    const PreparedDesign checked = check_new_design({*project.mission, *project.budget, request.space, seed});
+    if (latest && latest->state == storage::DesignState::interrupted && request.fresh) designs.abandon(latest->id);
+    out.design = designs.start({checked.choice.architectures_text(), checked.choice.flavours_text(), seed,
+                                std::string(storage::kSlurmOwnerPrefix) + "submitting"});
+    // Recorded before the cluster is asked anything, so that a failure has a row to note it in
+    // and run-design can submit this design again.
+    jobs.submitted(out.design.id, "", planned_job_folder(project, user, out.design.id), settings_document(given).dump());
+    try {
+      const std::string folder = make_job_folder(shell, project, user, out.design.id);
+      const std::string job_id = submit_job(shell, project, out.design, folder, checked.mission.document, given);
+      jobs.submitted(out.design.id, job_id, folder, settings_document(given).dump());
+      designs.set_owner(out.design.id, slurm_owner(job_id, project));
+    } catch (const cluster::ClusterError& e) {
+      designs.release(out.design.id, out.design.owner);
+      jobs.observed(out.design.id, "", e.what());
+      throw;
+    }
+  }
+  out.design = reread(home, project, out.design.id);
+  out.job = *jobs.find(out.design.id);
+  return out;
+}
+
+std::optional<storage::DesignProgress> refresh_cluster_design(Home& home, const storage::Project& project,
+                                                              storage::Design& design) {
+  if (!project.cluster || design.state != storage::DesignState::running) return std::nullopt;
+  storage::ClusterJobs jobs(home.workspace(), project);
+  const auto job = jobs.find(design.id);
+  if (!job || job->job_id.empty()) return std::nullopt;
+  std::optional<storage::DesignProgress> progress;
+  try {
+    const cluster::Shell shell = shell_of(project);
+    const cluster::JobStatus status = cluster::job_status(shell, job->job_id);
+    if (!cluster::finished(status.state) && status.state != cluster::JobState::unknown) {
+      jobs.observed(design.id, status.slurm_state, "");
+      return progress_there(shell, project, job->folder);
+    }
+    // The job has ended: its design folder comes home, finished or not.
+    storage::Designs designs(home.workspace(), project);
+    if (cluster::exists(shell, job->folder + "/design/design.db"))
+      cluster::fetch_folder(shell, job->folder + "/design", design.folder);
+    std::optional<storage::DesignProgress> final_progress;
+    if (std::filesystem::exists(storage::DesignStore::file_in(design.folder)))
+      final_progress = storage::read_design_progress(design.folder);
+    if (final_progress && final_progress->phase == "finished" && final_progress->best) {
+      designs.finish(design.id, final_progress->best->command_line, final_progress->best->mean_score);
+      jobs.observed(design.id, status.slurm_state.empty() ? "COMPLETED" : status.slurm_state, "");
+    } else {
+      designs.release(design.id, design.owner);
+      jobs.observed(design.id, status.slurm_state, ended_note(shell, *job, status));
+    }
+    design = reread(home, project, design.id);
+  } catch (const cluster::ClusterError& e) {
+    jobs.observed(design.id, "", e.what());
+  }
+  return progress;
+}
+
+StoppedDesign stop_design(Home& home, const storage::User& user, const std::optional<std::string>& name) {
+  const storage::Project project = the_project(home, user, name);
+  storage::Designs designs(home.workspace(), project);
+  auto latest = designs.latest();
+  if (latest && project.cluster) refresh_cluster_design(home, project, *latest);
+  if (!latest || latest->state != storage::DesignState::running)
+    throw Conflict("no design of " + project.name + " is running");
+  StoppedDesign out;
+  if (project.cluster) {
+    storage::ClusterJobs jobs(home.workspace(), project);
+    const auto job = jobs.find(latest->id);
+    if (!job || job->job_id.empty()) throw Conflict("design " + std::to_string(latest->id) + " has no Slurm job to cancel");
+    const cluster::Shell shell = shell_of(project);
+    cluster::cancel(shell, job->job_id);
+    // The job's folder comes home once its process is gone, so that status shows where the
+    // design stopped (Slurm ends a cancelled job within its KillWait).
+    for (int i = 0; i < 120 && !cluster::finished(cluster::job_status(shell, job->job_id).state); ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(250));
+    if (cluster::exists(shell, job->folder + "/design/design.db"))
+      cluster::fetch_folder(shell, job->folder + "/design", latest->folder);
+    designs.release(latest->id, latest->owner);
+    jobs.observed(latest->id, "CANCELLED",
+                  "Slurm job " + job->job_id + " was cancelled by stop-design; run-design submits it again and it "
+                  "resumes from its last checkpoint");
+    out.how = "cancelled Slurm job " + job->job_id;
+  } else {
+    const auto owner = storage::Owner::parse(latest->owner);
+    if (!owner || owner->job != "cli")
+      throw Conflict("design " + std::to_string(latest->id) + " runs in a web server (run-exp); stop it from the web app");
+    if (storage::local_owner(owner->pid, owner->job).text() != latest->owner)
+      throw Conflict("design " + std::to_string(latest->id) + " runs on another machine (" + latest->owner + ")");
+    ::kill(static_cast<pid_t>(owner->pid), SIGTERM);
+    // Its lease dies with the process: wait for that, so that status right after agrees.
+    for (int i = 0; i < 200 && storage::owner_alive(latest->owner, latest->heartbeat_at, latest->heartbeat_at, latest->pid); ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    out.how = "stopped process " + std::to_string(owner->pid);
+  }
+  out.design = reread(home, project, latest->id);
+  if (out.design.state == storage::DesignState::running) out.design = *designs.latest();
+  return out;
+}
+
+ClusterCheckReport check_project_cluster(Home& home, const storage::User& user, const std::optional<std::string>& name) {
+  ClusterCheckReport report;
+  report.project = the_project(home, user, name);
+  if (!report.project.cluster)
+    throw InvalidRequest("project " + report.project.name + " runs on this machine; cluster-check is for a cluster project");
+  const cluster::Shell shell = shell_of(report.project);
+  report.where = shell.describe();
+  report.checks = cluster::check_cluster(shell, report.project.cluster->binary_or_default(), version_line(),
+                                         report.project.cluster->workdir_or_default());
+  return report;
+}
+
+json cluster_job_document(const storage::ClusterJob& job) {
+  json out{{"job_id", job.job_id.empty() ? json() : json(job.job_id)},
+           {"folder", job.folder},
+           {"settings", job.settings.empty() ? json::object() : json::parse(job.settings)},
+           {"slurm_state", job.slurm_state.empty() ? json() : json(job.slurm_state)},
+           {"note", job.note.empty() ? json() : json(job.note)}};
+  return out;
+}
+
+storage::DesignProgress stored_progress_from_document(const json& d) {
+  storage::DesignProgress p;
+  p.started = d.at("started").get<bool>();
+  p.phase = d.at("phase").get<std::string>();
+  p.iteration = d.at("iteration").get<int>();
+  p.nb_iterations = d.at("total_iterations").get<int>();
+  p.experiments_used = d.at("experiments_used").get<std::int64_t>();
+  p.budget = p.experiments_used + d.at("remaining_budget").get<std::int64_t>();
+  p.race_budget = d.at("race_budget").get<std::int64_t>();
+  p.race_configurations = d.at("race_configurations").get<int>();
+  p.configurations_sampled = d.at("configurations_sampled").get<std::int64_t>();
+  if (const auto& b = d.at("best"); !b.is_null())
+    p.best = storage::ConfigurationScore{b.at("id").get<int>(), b.at("configuration").get<std::string>(),
+                                         b.at("mean_score").get<double>(), b.at("runs").get<std::int64_t>()};
+  p.finish_reason = d.value("finish_reason", "");
+  return p;
+}
+
+}  // namespace sd::app
