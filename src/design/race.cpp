@@ -158,25 +158,53 @@ std::size_t race_step(RaceState& s, const RaceSettings& settings, RaceEnvironmen
   }
   while (s.results.size() < k) s.results.emplace_back(ncols, std::nan(""));
 
-  // Run the batch: every alive configuration lacking a result on this instance.
+  // Run the batch: every alive configuration lacking a result on this instance. Before the
+  // first test, the instances up to it go in the same batch: nothing can be eliminated before
+  // then, so their runs would be asked for anyway, and one wide batch keeps every worker (a
+  // thread, an MPI rank) busy where a race's first narrow steps would leave most idle. Their
+  // costs wait in s.ahead until their step takes them; runs are deterministic, so the race,
+  // its results and their order are the same as step by step.
   const std::size_t position = s.position_of(k);
-  const InstancePosition& inst = env.instances.at(position);
+  std::vector<double> costs(which_exe.size(), std::nan(""));
   std::vector<Experiment> batch;
-  batch.reserve(which_exe.size());
-  for (std::size_t c : which_exe) {
+  std::vector<std::size_t> now;  // which_exe index of each of this step's experiments in batch
+  const auto experiment = [&](std::size_t c, std::size_t at) {
     const int id = s.config_ids[c];
-    batch.push_back({id, &env.store[id].config, inst.instance, inst.seed, position});
+    const InstancePosition& inst = env.instances.at(at);
+    return Experiment{id, &env.store[id].config, inst.instance, inst.seed, at};
+  };
+  for (std::size_t e = 0; e < which_exe.size(); ++e) {
+    if (const auto it = s.ahead.find({position, s.config_ids[which_exe[e]]}); it != s.ahead.end()) {
+      costs[e] = it->second;
+      s.ahead.erase(it);
+      continue;
+    }
+    batch.push_back(experiment(which_exe[e], position));
+    now.push_back(e);
   }
-  std::vector<double> costs(batch.size(), std::nan(""));
-  env.runner.run(batch, costs);
-  for (std::size_t e = 0; e < batch.size(); ++e) {
+  if (!batch.empty())
+    for (std::size_t later = k + 1; later <= std::min(first_test, s.n_tasks); ++later) {
+      const std::size_t at = s.position_of(later);
+      if (at > env.instances.size()) break;
+      for (std::size_t c : which_exe) {
+        const bool known = later <= s.results.size() && !std::isnan(s.results[later - 1][c]);  // an elite's
+        if (!known && !s.ahead.count({at, s.config_ids[c]})) batch.push_back(experiment(c, at));
+      }
+    }
+  std::vector<double> run(batch.size(), std::nan(""));
+  if (!batch.empty()) env.runner.run(batch, run);
+  for (std::size_t i = 0; i < batch.size(); ++i) {
+    if (i < now.size()) costs[now[i]] = run[i];
+    else s.ahead[{batch[i].position, batch[i].configuration_id}] = run[i];
+  }
+  for (std::size_t e = 0; e < which_exe.size(); ++e) {
+    const int id = s.config_ids[which_exe[e]];
     if (std::isnan(costs[e]))
-      throw std::runtime_error("the cost of configuration " + std::to_string(batch[e].configuration_id) +
-                               " is not a number");
+      throw std::runtime_error("the cost of configuration " + std::to_string(id) + " is not a number");
     s.results[k - 1][which_exe[e]] = costs[e];
-    if (env.record) env.record(position, batch[e].configuration_id, costs[e]);
+    if (env.record) env.record(position, id, costs[e]);
   }
-  s.experiments_used += static_cast<long long>(batch.size());
+  s.experiments_used += static_cast<long long>(which_exe.size());
 
   // Elites that already had this instance count down their protection.
   for (std::size_t c = 0; c < ncols; ++c)
@@ -219,7 +247,7 @@ std::size_t race_step(RaceState& s, const RaceSettings& settings, RaceEnvironmen
   if (settings.elitist && !any_elite(s) && k > first_test && k % each_test == 0)
     s.no_elimination = s.nb_alive() == alive_before ? s.no_elimination + 1 : 0;
   ++s.next_task;
-  return batch.size();
+  return which_exe.size();
 }
 
 void rebuild_results(RaceState& s, std::size_t rows, const ResultLookup& lookup) {

@@ -5,6 +5,7 @@
 // ranks the survivors.
 #include <cstddef>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,9 @@ struct RaceState {
   std::size_t best = 0;                 // column of the best so far (for progress)
   bool finished = false;
   std::string stop_reason;
+  /// Costs run ahead of their step, by (position, configuration id), until their step takes
+  /// them. Not checkpointed: after a resume they are run again, to the same values.
+  std::map<std::pair<std::size_t, int>, double> ahead;
 
   std::size_t position_of(std::size_t task) const {
     return task <= head.size() ? head[task - 1] : future_begin + (task - head.size() - 1);

@@ -180,7 +180,7 @@ TEST(design_IteratedRace, ResultDoesNotDependOnTheThreadCount) {
 TEST(design_IteratedRace, ResumingFromAnyCheckpointGivesTheSameResult) {
   const ParameterSpace s = synthetic_space();
   std::vector<nlohmann::json> checkpoints;
-  std::vector<std::size_t> evaluated_at;
+  std::vector<std::size_t> evaluated_at, ahead_at;
   CountingRunner full_runner;
   IteratedRace full(s, options(1200, 9), full_runner);
   std::size_t configurations_seen = 0, experiments_seen = 0;
@@ -192,6 +192,7 @@ TEST(design_IteratedRace, ResumingFromAnyCheckpointGivesTheSameResult) {
     experiments_seen = c.state.experiments.size();
     checkpoints.push_back(state_to_json(c.state, checkpoints.size() % 2 == 0));
     evaluated_at.push_back(full_runner.evaluated);
+    ahead_at.push_back(c.state.race ? c.state.race->ahead.size() : 0);
   });
   const DesignResult expected = full.run();
   const std::string expected_state = state_to_json(full.state()).dump();
@@ -213,11 +214,41 @@ TEST(design_IteratedRace, ResumingFromAnyCheckpointGivesTheSameResult) {
     IteratedRace resumed(s, options(1200, 9), runner);
     resumed.restore(std::move(restored));
     const DesignResult r = resumed.run();
-    EXPECT_EQ(runner.evaluated + evaluated_at[k], full_runner.evaluated) << "checkpoint " << k;
+    // Only the runs made ahead of their step (before a race's first test) are made again.
+    EXPECT_EQ(runner.evaluated + evaluated_at[k], full_runner.evaluated + ahead_at[k]) << "checkpoint " << k;
     ASSERT_EQ(r.elites.size(), expected.elites.size()) << "checkpoint " << k;
     for (std::size_t i = 0; i < r.elites.size(); ++i) EXPECT_EQ(r.elites[i].id, expected.elites[i].id);
     EXPECT_EQ(state_to_json(resumed.state()).dump(), expected_state) << "checkpoint " << k;
   }
+}
+
+TEST(design_IteratedRace, RunsUpToTheFirstTestGoOutAsOneBatchWithTheSameResult) {
+  // A runner that records the size of every batch it is given.
+  struct BatchSizes final : ExperimentRunner {
+    std::vector<std::size_t> sizes;
+    void run(std::span<const Experiment> experiments, std::span<double> costs) override {
+      sizes.push_back(experiments.size());
+      for (std::size_t i = 0; i < experiments.size(); ++i) costs[i] = synthetic_cost(experiments[i]);
+    }
+  };
+  const ParameterSpace s = synthetic_space();
+  BatchSizes runner;
+  IteratedRace race(s, options(1200, 9), runner);
+  std::size_t first_race_width = 0;
+  race.on_progress([&](const Progress& p) {
+    if (first_race_width == 0) first_race_width = static_cast<std::size_t>(p.race_configurations);
+  });
+  const DesignResult r = race.run();
+  ASSERT_FALSE(runner.sizes.empty());
+  // The first race's first batch holds every configuration on each instance up to the first
+  // test (irace's firstTest, 5 here); its next four steps need no run of their own.
+  EXPECT_EQ(runner.sizes.front(), first_race_width * 5);
+  ThreadedRunner plain(synthetic_cost, 1);
+  IteratedRace same(s, options(1200, 9), plain);
+  const DesignResult expected = same.run();
+  ASSERT_EQ(r.elites.size(), expected.elites.size());
+  for (std::size_t i = 0; i < r.elites.size(); ++i) EXPECT_EQ(r.elites[i].id, expected.elites[i].id);
+  EXPECT_EQ(state_to_json(race.state()).dump(), state_to_json(same.state()).dump());
 }
 
 TEST(design_IteratedRace, RefusesAForeignCheckpoint) {
