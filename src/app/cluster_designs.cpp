@@ -7,11 +7,13 @@
 
 #include "app/errors.hpp"
 #include "app/inputs.hpp"
+#include "app/projects.hpp"
 #include "cluster/slurm.hpp"
 #include "cluster/transfer.hpp"
 #include "design/design_space.hpp"
 #include "missions/catalogue.hpp"
 #include "evaluation/results_version.hpp"
+#include "storage/clock.hpp"
 #include "storage/design_store.hpp"
 #include "storage/lease.hpp"
 
@@ -184,11 +186,6 @@ storage::Design reread(Home& home, const storage::Project& project, std::int64_t
   throw NotFound("design " + std::to_string(id) + " is gone");
 }
 
-storage::Project the_project(Home& home, const storage::User& user, const std::optional<std::string>& name) {
-  storage::Projects projects(home.workspace(), user);
-  return name ? projects.get(*name) : projects.require_active();
-}
-
 }  // namespace
 
 bool ClusterJobRequest::given() const {
@@ -209,7 +206,7 @@ ClusterSubmission submit_cluster_design(Home& home, const storage::User& user, c
                                         const ClusterJobRequest& given) {
   check(given);
   storage::Workspace& workspace = home.workspace();
-  const storage::Project project = the_project(home, user, request.project);
+  const storage::Project project = project_or_active(home, user, request.project);
   if (!project.cluster)
     throw InvalidRequest("project " + project.name + " runs on this machine; --nodes, --ntasks, --cpus-per-task, --time, "
                          "--partition and --account are for a cluster project");
@@ -248,6 +245,9 @@ ClusterSubmission submit_cluster_design(Home& home, const storage::User& user, c
       designs.release(out.design.id, out.design.owner);
       jobs.observed(out.design.id, "", e.what());
       throw;
+    } catch (...) {
+      designs.release(out.design.id, out.design.owner);  // run-design submits it again
+      throw;
     }
   } else {
     const std::uint64_t seed = request.seed ? *request.seed : random_seed();
@@ -257,10 +257,10 @@ ClusterSubmission submit_cluster_design(Home& home, const storage::User& user, c
     if (latest && latest->state == storage::DesignState::interrupted && request.fresh) designs.abandon(latest->id);
     out.design = designs.start({checked.choice.architectures_text(), checked.choice.flavours_text(), seed,
                                 std::string(storage::kSlurmOwnerPrefix) + "submitting"});
-    // Recorded before the cluster is asked anything, so that a failure has a row to note it in
-    // and run-design can submit this design again.
-    jobs.submitted(out.design.id, "", planned_job_folder(project, user, out.design.id), settings_document(given).dump());
     try {
+      // Recorded before the cluster is asked anything, so that a failure has a row to note it
+      // in and run-design can submit this design again.
+      jobs.submitted(out.design.id, "", planned_job_folder(project, user, out.design.id), settings_document(given).dump());
       const std::string folder = make_job_folder(shell, project, user, out.design.id);
       const std::string job_id = submit_job(shell, project, out.design, folder, checked.mission.document, given);
       jobs.submitted(out.design.id, job_id, folder, settings_document(given).dump());
@@ -268,6 +268,9 @@ ClusterSubmission submit_cluster_design(Home& home, const storage::User& user, c
     } catch (const cluster::ClusterError& e) {
       designs.release(out.design.id, out.design.owner);
       jobs.observed(out.design.id, "", e.what());
+      throw;
+    } catch (...) {
+      designs.release(out.design.id, out.design.owner);  // run-design submits it again
       throw;
     }
   }
@@ -281,7 +284,14 @@ std::optional<storage::DesignProgress> refresh_cluster_design(Home& home, const 
   if (!project.cluster || design.state != storage::DesignState::running) return std::nullopt;
   storage::ClusterJobs jobs(home.workspace(), project);
   const auto job = jobs.find(design.id);
-  if (!job || job->job_id.empty()) return std::nullopt;
+  if (!job || job->job_id.empty()) {
+    // Its submitting process stopped before Slurm took the job (or is still at it).
+    if (job && storage::unix_now() - job->submitted_at < kSubmissionGraceSeconds) return std::nullopt;
+    storage::Designs(home.workspace(), project).release(design.id, design.owner);
+    if (job) jobs.observed(design.id, "", "its submission did not complete; run-design submits it again");
+    design = reread(home, project, design.id);
+    return std::nullopt;
+  }
   std::optional<storage::DesignProgress> progress;
   try {
     const cluster::Shell shell = shell_of(project);
@@ -312,7 +322,7 @@ std::optional<storage::DesignProgress> refresh_cluster_design(Home& home, const 
 }
 
 StoppedDesign stop_design(Home& home, const storage::User& user, const std::optional<std::string>& name) {
-  const storage::Project project = the_project(home, user, name);
+  const storage::Project project = project_or_active(home, user, name);
   storage::Designs designs(home.workspace(), project);
   auto latest = designs.latest();
   if (latest && project.cluster) refresh_cluster_design(home, project, *latest);
@@ -355,7 +365,7 @@ StoppedDesign stop_design(Home& home, const storage::User& user, const std::opti
 
 ClusterCheckReport check_project_cluster(Home& home, const storage::User& user, const std::optional<std::string>& name) {
   ClusterCheckReport report;
-  report.project = the_project(home, user, name);
+  report.project = project_or_active(home, user, name);
   if (!report.project.cluster)
     throw InvalidRequest("project " + report.project.name + " runs on this machine; cluster-check is for a cluster project");
   const cluster::Shell shell = shell_of(report.project);

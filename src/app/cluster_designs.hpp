@@ -21,6 +21,10 @@
 
 namespace sd::app {
 
+/// How long a submission may take before a design or experiment still waiting for its job id
+/// is taken for one whose submitting process stopped (it then becomes interrupted).
+inline constexpr std::int64_t kSubmissionGraceSeconds = 300;
+
 /// The sbatch settings a user may give run-design (empty or nullopt: Slurm's defaults, or
 /// those of the design's last submission).
 struct ClusterJobRequest {

@@ -5,11 +5,13 @@
 #include <map>
 #include <numeric>
 
+#include "app/cluster_experiments.hpp"
 #include "app/errors.hpp"
 #include "app/evaluation_job.hpp"
 #include "app/evolution_job.hpp"
 #include "app/inputs.hpp"
 #include "app/lease_keeper.hpp"
+#include "app/projects.hpp"
 #include "control/config_string.hpp"
 #include "core/fnv.hpp"
 #include "core/rng.hpp"
@@ -128,8 +130,10 @@ void make_evostick_design(storage::Experiments& store, const storage::Experiment
   store.design_finished(d.id, outcome.control_software, outcome.result.best_mean, outcome.result.runs);
 }
 
-void assess(storage::Experiments& store, const storage::ExperimentDesign& d, int seeds_count,
-            const ExperimentRunOptions& options) {
+}  // namespace
+
+void assess_design(storage::Experiments& store, const storage::ExperimentDesign& d, int seeds_count,
+                   const ExperimentRunOptions& options) {
   const Mission mission = load_mission(d.plan.mission);
   const ControlSoftware software = parse_control_software(d.configuration.value());
   const std::vector<std::uint64_t> seeds = assessment_seeds(seeds_count);
@@ -140,8 +144,6 @@ void assess(storage::Experiments& store, const storage::ExperimentDesign& d, int
   if (options.observer)
     options.observer->design_done(d, std::accumulate(scores.begin(), scores.end(), 0.0) / static_cast<double>(scores.size()));
 }
-
-}  // namespace
 
 std::string mission_label(const std::string& reference) {
   return is_mission_file(reference) ? std::filesystem::path(reference).stem().string() : reference;
@@ -284,7 +286,7 @@ ExperimentOutcome run_experiment(StartedExperiment& e, const ExperimentRunOption
         design_start = Clock::now();
       }
       d = store.design(d.id);  // with its final control software
-      assess(store, d, protocol.assessment_seeds, options);
+      assess_design(store, d, protocol.assessment_seeds, options);
       store.add_wall_seconds(d.id, seconds_since(design_start));
       ++outcome.designs_done;
     }
@@ -305,9 +307,11 @@ ExperimentOutcome run_experiment(StartedExperiment& e, const ExperimentRunOption
 
 std::vector<ExperimentProgress> experiments_progress(Home& home, const storage::User& user,
                                                      const std::optional<std::string>& project) {
-  storage::Projects projects(home.workspace(), user);
-  const storage::Project p = project ? projects.get(*project) : projects.require_active();
+  const storage::Project p = project_or_active(home, user, project);
   storage::Experiments store(home.workspace(), p);
+  // A cluster experiment's designs come home (and are assessed) as their tasks end.
+  if (p.cluster)
+    for (const auto& experiment : store.list()) refresh_cluster_experiment(home, p, experiment);
   std::vector<ExperimentProgress> all;
   for (const auto& experiment : store.list()) {
     ExperimentProgress progress{experiment, 0, 0, std::nullopt};

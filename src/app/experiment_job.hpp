@@ -111,6 +111,11 @@ struct ExperimentOutcome {
 
 ExperimentOutcome run_experiment(StartedExperiment& experiment, const ExperimentRunOptions& options);
 
+/// Scores a design's final control software on the assessment seeds and records it: the
+/// design is done. (A cluster experiment's designs are assessed here when they come home.)
+void assess_design(storage::Experiments& store, const storage::ExperimentDesign& design, int seeds_count,
+                   const ExperimentRunOptions& options);
+
 /// A project's experiments with their progress (status, the web monitor).
 struct ExperimentProgress {
   storage::Experiment experiment;

@@ -35,6 +35,11 @@ storage::Project set_cluster_paths(Home& home, const storage::User& user, const 
   return storage::Projects(home.workspace(), user).set_cluster_paths(workdir, binary);
 }
 
+storage::Project project_or_active(Home& home, const storage::User& user, const std::optional<std::string>& name) {
+  storage::Projects projects(home.workspace(), user);
+  return name ? projects.get(*name) : projects.require_active();
+}
+
 storage::Project active_project(Home& home, const storage::User& user) {
   return storage::Projects(home.workspace(), user).require_active();
 }

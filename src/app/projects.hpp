@@ -24,6 +24,8 @@ std::vector<storage::Project> list_projects(Home& home, const storage::User& use
 storage::Project select_project(Home& home, const storage::User& user, const std::string& name);
 /// NotFound with a hint when none is selected.
 storage::Project active_project(Home& home, const storage::User& user);
+/// The named project (a server's request, --project), or the active one.
+storage::Project project_or_active(Home& home, const storage::User& user, const std::optional<std::string>& name);
 
 /// The budget as typed (app::parse_budget's rule).
 storage::Project set_budget(Home& home, const storage::User& user, const std::string& budget);

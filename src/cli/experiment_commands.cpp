@@ -11,13 +11,16 @@
 
 #include "app/accounts.hpp"
 #include "app/experiment_job.hpp"
+#include "app/cluster_experiments.hpp"
 #include "app/experiment_report.hpp"
+#include "app/projects.hpp"
 #include "app/inputs.hpp"
 #include "cli/command_registry.hpp"
 #include "cli/fault_injection.hpp"
 #include "cli/progress_line.hpp"
 #include "control/config_string.hpp"
 #include "design/design_space.hpp"
+#include "cli/slurm_flags.hpp"
 #include "storage/lease.hpp"
 
 namespace sd::cli {
@@ -29,6 +32,7 @@ struct ExperimentOptions {
   double budget_scale = 1.0;
   bool evostick = false, dry_run = false, json = false;
   unsigned threads = 0;
+  app::ClusterJobRequest job;  // a cluster project's sbatch settings
   CLI::Option *designs_option = nullptr, *eval_seeds_option = nullptr, *scale_option = nullptr;
 };
 
@@ -127,6 +131,36 @@ class ExperimentDisplay final : public app::ExperimentObserver {
   std::int64_t checkpoints_ = 0;
 };
 
+/// A cluster project's experiment: its designs go to Slurm as one job array.
+void submit_to_cluster(app::Home& home, const storage::User& user, const app::PlannedExperiment& plan,
+                       const ExperimentOptions& o) {
+  const auto s = app::submit_cluster_experiment(home, user, plan, o.job,
+                                                o.project.empty() ? std::nullopt : std::optional(o.project), o.threads);
+  if (o.json) {
+    std::cout << app::experiments_document(app::experiments_progress(home, user, s.project.name)).dump(2) << "\n";
+    return;
+  }
+  const std::string& name = s.experiment.name;
+  if (s.experiment.state == storage::DesignState::finished) {
+    std::cout << "Experiment " << name << " of " << s.project.name << " has finished (" << s.designs_done << " designs"
+              << (s.designs_reused ? ", " + std::to_string(s.designs_reused) + " reused from other experiments" : "")
+              << ").\nReport it with: swarmdesign report " << name << "\n";
+    return;
+  }
+  if (s.still_running) {
+    std::cout << "Experiment " << name << " of " << s.project.name << " still runs as Slurm array job "
+              << (s.job ? s.job->job_id : "?") << ": " << s.designs_done << " of " << s.designs << " designs done.\n"
+              << "  watch it:  swarmdesign status\n";
+    return;
+  }
+  std::cout << "Experiment " << name << " of " << s.project.name << ": " << s.designs_submitted << " of " << s.designs
+            << " designs submitted to Slurm as array job " << s.job->job_id << " on " << s.where << " (folder "
+            << s.job->folder << ")";
+  if (s.designs_done) std::cout << "; " << s.designs_done << " already done";
+  std::cout << ".\nEach design comes home when its task ends and is assessed here.\n"
+            << "  watch it:  swarmdesign status\n  then:      swarmdesign report " << name << "\n";
+}
+
 void run_experiment_command(const ExperimentOptions& o) {
   const app::PlannedExperiment plan = app::plan_experiment(requested_protocol(o));
   for (const auto& note : plan.notes) std::cerr << "swarmdesign: note: " << note << "\n";
@@ -145,6 +179,15 @@ void run_experiment_command(const ExperimentOptions& o) {
     return;
   }
 
+  {
+    app::Home home;
+    const auto user = app::signed_in_user(home);
+    const std::optional<std::string> project = o.project.empty() ? std::nullopt : std::optional(o.project);
+    if (app::project_or_active(home, user, project).cluster) return submit_to_cluster(home, user, plan, o);
+    if (o.job.given())
+      throw UsageError("--nodes, --ntasks, --cpus-per-task, --time, --partition and --account are for a cluster project; "
+                       "this one runs on this machine");
+  }
   app::StartedExperiment started = [&] {
     app::Home home;
     return app::start_experiment(home, app::signed_in_user(home), plan,
@@ -234,6 +277,7 @@ CommandRegistrar registrar{45, [](CLI::App& app, Context&) {
   cmd->add_option("--threads", o->threads, "Simulations in parallel (default: all cores)")->check(CLI::NonNegativeNumber);
   cmd->add_flag("--dry-run", o->dry_run, "Print what would run and how long it would take here, and stop");
   cmd->add_flag("--json", o->json, "Print JSON documents instead of text");
+  add_slurm_flags(*cmd, o->job);
   cmd->footer(
       "Experiments of spec §6, on the thesis' missions and budgets (aac 200 000, foraging 50 000,\n"
       "tutti-aggregation 100 000, grid-exploration 100 000, aggregation-xor 200 000):\n"
@@ -242,7 +286,10 @@ CommandRegistrar registrar{45, [](CLI::App& app, Context&) {
       "  architecture  all five flavours as finite-state machines against behaviour trees, budget 200 000\n"
       "Designs run one after the other on all cores; every design and assessment is stored in the\n"
       "project as it ends. Killed, the same command resumes it inside the design it was in and ends\n"
-      "with the same results. Budgets below the optimiser's minimum are raised to it (with a note).\n\n"
+      "with the same results. Budgets below the optimiser's minimum are raised to it (with a note).\n"
+      "In a cluster project the designs go to Slurm as one job array (one task per design, with the\n"
+      "Slurm options above); each comes home when its task ends and is assessed here. Run the same\n"
+      "command again to submit what a cut-short array left: those designs resume.\n\n"
       "Examples:\n  swarmdesign experiment validation --dry-run\n"
       "  swarmdesign experiment combination --missions aac,foraging --designs 3 --budget-scale 0.05\n"
       "  swarmdesign experiment --file my-protocol.json");

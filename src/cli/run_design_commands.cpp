@@ -23,6 +23,7 @@
 #include "cli/design_display.hpp"
 #include "cli/design_flags.hpp"
 #include "cli/score_output.hpp"
+#include "cli/slurm_flags.hpp"
 #include "storage/lease.hpp"
 
 namespace sd::cli {
@@ -184,13 +185,7 @@ CommandRegistrar registrar{40, [](CLI::App& app, Context& context) {
       "it, and run-design submits an interrupted one again (it resumes from its last checkpoint).\n\n"
       "Example:\n  swarmdesign run-design --fsm --chocolate --seed 1\n  swarmdesign run-design --detach\n"
       "  swarmdesign run-design --ntasks 64 --time 4:00:00 --partition batch   (cluster project)");
-  auto* slurm = cmd->add_option_group("Cluster project (Slurm)");
-  slurm->add_option("--nodes", run->job.nodes, "Nodes of the job (sbatch --nodes)");
-  slurm->add_option("--ntasks", run->job.ntasks, "Tasks of the job: one MPI rank each; rank 0 races (sbatch --ntasks)");
-  slurm->add_option("--cpus-per-task", run->job.cpus_per_task, "Threads of each task (sbatch --cpus-per-task; default 1)");
-  slurm->add_option("--time", run->job.time, "Time limit, e.g. 2:00:00 or 1-12 (sbatch --time)");
-  slurm->add_option("--partition", run->job.partition, "Partition (sbatch --partition)");
-  slurm->add_option("--account", run->job.account, "Account charged (sbatch --account)");
+  add_slurm_flags(*cmd, run->job);
   cmd->callback([run, &context] { run_design(*run, context.mpi_ranks); });
 
   auto test = std::make_shared<TestDesignOptions>();

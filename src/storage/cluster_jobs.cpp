@@ -41,4 +41,54 @@ std::optional<ClusterJob> ClusterJobs::find(std::int64_t design_id) {
                     query.text(4),    query.text(5), query.integer(6), query.integer(7)};
 }
 
+void ClusterJobs::array_submitted(std::int64_t experiment_id, const std::string& job_id, const std::string& folder,
+                                  const std::string& settings, const std::vector<std::int64_t>& tasks) {
+  Database& db = workspace_.database();
+  Transaction transaction(db);
+  auto owned = db.prepare("SELECT 1 FROM experiments WHERE id = ? AND project_id = ?");
+  owned.bind(1, experiment_id).bind(2, project_.id);
+  if (!owned.step()) throw NotFound("no experiment " + std::to_string(experiment_id) + " in project " + project_.name);
+  std::string list = "[";
+  for (std::size_t i = 0; i < tasks.size(); ++i) {
+    if (i > 0) list += ',';
+    list += std::to_string(tasks[i]);
+  }
+  list += "]";
+  db.prepare("INSERT INTO cluster_array_jobs (experiment_id, job_id, folder, settings, tasks, slurm_state, note, "
+             "submitted_at) VALUES (?1, nullif(?2, ''), ?3, ?4, ?5, nullif(?6, ''), NULL, ?7) "
+             "ON CONFLICT (experiment_id) DO UPDATE SET job_id = nullif(?2, ''), folder = ?3, settings = ?4, "
+             "tasks = ?5, slurm_state = nullif(?6, ''), note = NULL, submitted_at = ?7, checked_at = NULL")
+      .bind(1, experiment_id).bind(2, job_id).bind(3, folder).bind(4, settings).bind(5, list)
+      .bind(6, job_id.empty() ? "" : "PENDING").bind(7, unix_now()).run();
+  transaction.commit();
+}
+
+void ClusterJobs::array_observed(std::int64_t experiment_id, const std::string& slurm_state, const std::string& note) {
+  workspace_.database()
+      .prepare("UPDATE cluster_array_jobs SET slurm_state = coalesce(nullif(?1, ''), slurm_state), note = nullif(?2, ''), "
+               "checked_at = ?3 WHERE experiment_id = ?4 AND experiment_id IN "
+               "(SELECT id FROM experiments WHERE project_id = ?5)")
+      .bind(1, slurm_state).bind(2, note).bind(3, unix_now()).bind(4, experiment_id).bind(5, project_.id).run();
+}
+
+std::optional<ClusterArrayJob> ClusterJobs::find_array(std::int64_t experiment_id) {
+  auto query = workspace_.database().prepare(
+      "SELECT j.experiment_id, coalesce(j.job_id, ''), j.folder, j.settings, j.tasks, coalesce(j.slurm_state, ''), "
+      "coalesce(j.note, ''), j.submitted_at FROM cluster_array_jobs j JOIN experiments e ON e.id = j.experiment_id "
+      "WHERE j.experiment_id = ? AND e.project_id = ?");
+  query.bind(1, experiment_id).bind(2, project_.id);
+  if (!query.step()) return std::nullopt;
+  ClusterArrayJob job{query.integer(0), query.text(1), query.text(2), query.text(3), {}, query.text(5), query.text(6),
+                      query.integer(7)};
+  // The list is written above as "[id,id,...]".
+  const std::string list = query.text(4);
+  std::size_t at = 1;
+  while (at < list.size() && list[at] != ']') {
+    std::size_t end = list.find_first_of(",]", at);
+    job.tasks.push_back(std::stoll(list.substr(at, end - at)));
+    at = end + (list[end] == ',' ? 1 : 0);
+  }
+  return job;
+}
+
 }  // namespace sd::storage

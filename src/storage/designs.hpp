@@ -49,7 +49,7 @@ class Designs {
   Designs(Workspace& workspace, Project project);
 
   /// Records a running design and creates its folder <project>/designs/<id>. Refuses a
-  /// cluster project (not available yet), a project without mission or budget, and a
+  /// project without mission or budget, and a
   /// second running design (Conflict); a "running" design whose owner is gone is first
   /// marked interrupted.
   Design start(const DesignRequest& request);

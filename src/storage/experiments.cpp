@@ -87,8 +87,6 @@ void Experiments::mark_dead_experiments_interrupted() {
 
 std::pair<Experiment, bool> Experiments::start(const std::string& name, const std::string& protocol,
                                                const std::vector<PlannedDesign>& designs, const std::string& owner) {
-  if (project_.cluster)
-    throw Conflict("project " + project_.name + " runs on a cluster, and experiments on a cluster are not available yet");
   Database& db = workspace_.database();
   Transaction transaction(db);
   mark_dead_experiments_interrupted();

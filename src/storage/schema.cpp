@@ -177,6 +177,18 @@ CREATE TABLE cluster_jobs (
   submitted_at INTEGER NOT NULL,
   checked_at   INTEGER
 );
+-- An experiment's designs go as one Slurm job array: task i makes design tasks[i].
+CREATE TABLE cluster_array_jobs (
+  experiment_id INTEGER PRIMARY KEY REFERENCES experiments(id) ON DELETE CASCADE,
+  job_id        TEXT,              -- Slurm's, of the last submission (NULL: none accepted yet)
+  folder        TEXT    NOT NULL,  -- the experiment's folder on the cluster
+  settings      TEXT    NOT NULL,  -- sbatch settings (JSON), reused when submitted again
+  tasks         TEXT    NOT NULL,  -- JSON array: the experiment design id of each array task
+  slurm_state   TEXT,
+  note          TEXT,
+  submitted_at  INTEGER NOT NULL,
+  checked_at    INTEGER
+);
 )sql",
 };
 

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <fstream>
 #include <thread>
 
 #include "workflow/design_helpers.hpp"
@@ -210,6 +211,31 @@ TEST_F(cluster_projects, AJobCutByItsTimeLimitSaysSoAndResumesWhenSubmittedAgain
   sd_ok({"run-design", "--time", "10"});
   follow([&](const json& s) { return s["progress"]["experiments_used"].get<int>() > used; }, 120s);
   sd_ok({"stop-design"});
+}
+
+TEST_F(cluster_projects, AnExperimentGoesAsOneJobArrayAndEndsAsTheLocalOneDoes) {
+  const auto protocol = scratch() / "tiny.json";
+  std::ofstream(protocol) << json{{"name", "tiny"}, {"designs", 3}, {"assessment_seeds", 3},
+                                  {"missions", {{{"mission", mission_}, {"budget", 1100},
+                                                 {"conditions", {{{"name", "alone"}, {"architectures", {"fsm"}},
+                                                                  {"flavours", {"chocolate"}}}}}}}}};
+  // The same protocol made here, in the local project.
+  sd_ok({"experiment", "--file", protocol.string(), "--threads", "2", "--json"});
+  const json here = json::parse(sd_ok({"report", "tiny", "--out", (scratch() / "here").string(), "--json"}));
+
+  cluster_project("array", this_host(), 1100);
+  const std::string submitted = sd_ok({"experiment", "--file", protocol.string(), "--time", "5"});
+  EXPECT_NE(submitted.find("3 of 3 designs submitted to Slurm as array job"), std::string::npos) << submitted;
+  const json done = follow([](const json& s) { return s["experiments"][0]["state"] == "finished"; }, 240s);
+  EXPECT_EQ(done["experiments"][0]["designs_done"], 3);
+  const json there = json::parse(sd_ok({"report", "tiny", "--out", (scratch() / "there").string(), "--json"}));
+  ASSERT_EQ(there["designs"].size(), here["designs"].size());
+  for (std::size_t i = 0; i < here["designs"].size(); ++i) {
+    EXPECT_EQ(there["designs"][i]["configuration"], here["designs"][i]["configuration"]) << i;
+    EXPECT_EQ(there["designs"][i]["scores"], here["designs"][i]["scores"]) << i;
+  }
+  // Asked again, a finished experiment is not submitted again.
+  EXPECT_NE(sd_ok({"experiment", "--file", protocol.string()}).find("has finished"), std::string::npos);
 }
 
 TEST_F(cluster_projects, ALocalProjectRefusesSlurmOptionsAndStopDesignStopsItsProcess) {
