@@ -3,6 +3,7 @@
 #include <signal.h>
 
 #include <chrono>
+#include <functional>
 #include <thread>
 
 #include "app/errors.hpp"
@@ -10,7 +11,6 @@
 #include "app/projects.hpp"
 #include "cluster/slurm.hpp"
 #include "cluster/transfer.hpp"
-#include "design/design_space.hpp"
 #include "missions/catalogue.hpp"
 #include "evaluation/results_version.hpp"
 #include "storage/clock.hpp"
@@ -27,62 +27,15 @@ namespace {
 
 using nlohmann::json;
 
-cluster::Shell shell_of(const storage::Project& project) {
-  return cluster::Shell::for_cluster(project.cluster->host, project.cluster->user);
-}
-
 std::string slurm_owner(const std::string& job_id, const storage::Project& project) {
   return std::string(storage::kSlurmOwnerPrefix) + job_id + "@" + project.cluster->host;
-}
-
-json settings_document(const ClusterJobRequest& r) {
-  json out = json::object();
-  if (r.nodes) out["nodes"] = *r.nodes;
-  if (r.ntasks) out["ntasks"] = *r.ntasks;
-  if (r.cpus_per_task) out["cpus_per_task"] = *r.cpus_per_task;
-  if (!r.time.empty()) out["time"] = r.time;
-  if (!r.partition.empty()) out["partition"] = r.partition;
-  if (!r.account.empty()) out["account"] = r.account;
-  return out;
-}
-
-/// The settings of the last submission, with those given now taking their place.
-ClusterJobRequest merged(const std::string& stored, const ClusterJobRequest& given) {
-  ClusterJobRequest r;
-  const json s = stored.empty() ? json::object() : json::parse(stored);
-  if (s.contains("nodes")) r.nodes = s["nodes"].get<int>();
-  if (s.contains("ntasks")) r.ntasks = s["ntasks"].get<int>();
-  if (s.contains("cpus_per_task")) r.cpus_per_task = s["cpus_per_task"].get<int>();
-  r.time = s.value("time", "");
-  r.partition = s.value("partition", "");
-  r.account = s.value("account", "");
-  if (given.nodes) r.nodes = given.nodes;
-  if (given.ntasks) r.ntasks = given.ntasks;
-  if (given.cpus_per_task) r.cpus_per_task = given.cpus_per_task;
-  if (!given.time.empty()) r.time = given.time;
-  if (!given.partition.empty()) r.partition = given.partition;
-  if (!given.account.empty()) r.account = given.account;
-  return r;
-}
-
-void check(const ClusterJobRequest& r) {
-  for (const auto& [name, value] : {std::pair{"--nodes", r.nodes}, {"--ntasks", r.ntasks}, {"--cpus-per-task", r.cpus_per_task}})
-    if (value && *value < 1) throw InvalidRequest(std::string(name) + " must be at least 1");
-  require(cluster::time_problem(r.time));
-  require(cluster::partition_problem(r.partition));
-  require(cluster::account_problem(r.account));
-}
-
-std::string flags_of(const std::string& comma_list) {
-  std::string out;
-  for (const auto& name : design::split_list(comma_list)) out += " --" + name;
-  return out;
 }
 
 /// The job: the design started in design/ or, when design/ already holds one (a job submitted
 /// again), resumed from its last checkpoint. Several tasks run it under mpirun (rank 0 races);
 /// each task evaluates on the CPUs Slurm gave it.
-std::string job_body(const std::string& folder, const storage::Design& d, const std::string& binary, bool mpi) {
+std::string job_body(const std::string& folder, const storage::Design& d, const std::string& binary,
+                     const ClusterJobRequest& request) {
   const std::string q = cluster::shell_quote(folder);
   return "set -u\n"
          "cd " + q + " || exit 1\n"
@@ -90,29 +43,18 @@ std::string job_body(const std::string& folder, const storage::Design& d, const 
          "  set -- design --resume \"$PWD/design\"\n"
          "else\n"
          "  set -- design --mission \"$PWD/mission.json\" --budget " + std::to_string(d.budget) +
-         " --seed " + std::to_string(d.seed) + flags_of(d.architectures) + flags_of(d.flavours) +
+         " --seed " + std::to_string(d.seed) + space_flags(d.architectures, d.flavours) +
          " --out \"$PWD/design\"\n"
          "fi\n" +
-         (mpi ? "mpirun " : "") + cluster::shell_path(binary) +
-         " \"$@\" --threads \"${SLURM_CPUS_PER_TASK:-1}\" --json > result.part && mv result.part result.json\n";
+         design_command_line(binary, request);
 }
 
 /// Writes the job's files (the folder made absolute there) and submits it: the job id.
 std::string submit_job(const cluster::Shell& shell, const storage::Project& project, const storage::Design& d,
                        const std::string& folder, const std::string& mission_document, const ClusterJobRequest& r) {
-  cluster::JobSettings settings;
-  settings.job_name = "sd-" + project.name + "-" + std::to_string(d.id);
-  settings.nodes = r.nodes;
-  settings.ntasks = r.ntasks;
-  settings.cpus_per_task = r.cpus_per_task;
-  settings.time = r.time;
-  settings.partition = r.partition;
-  settings.account = r.account;
-  settings.output = folder + "/slurm-%j.out";
-  settings.workdir = folder;
-  const bool mpi = (r.ntasks && *r.ntasks > 1) || (r.nodes && *r.nodes > 1);
+  const auto settings = job_settings(r, "sd-" + project.name + "-" + std::to_string(d.id), folder, "slurm-%j.out");
   if (!mission_document.empty()) cluster::write_file(shell, folder + "/mission.json", mission_document);
-  const std::string body = job_body(folder, d, project.cluster->binary_or_default(), mpi);
+  const std::string body = job_body(folder, d, project.cluster->binary_or_default(), r);
   cluster::write_file(shell, folder + "/job.sh", cluster::sbatch_script(settings, body), true);
   return cluster::submit(shell, folder + "/job.sh");
 }
@@ -122,15 +64,10 @@ std::string planned_job_folder(const storage::Project& project, const storage::U
          std::to_string(design_id);
 }
 
-/// The job's folder on the cluster, created, as an absolute path there.
+/// The design's job folder on the cluster, created, as an absolute path there.
 std::string make_job_folder(const cluster::Shell& shell, const storage::Project& project, const storage::User& user,
                             std::int64_t design_id) {
-  const std::string folder = planned_job_folder(project, user, design_id);
-  const std::string q = cluster::shell_path(folder);
-  const auto made = shell.run_checked("mkdir -p " + q + " && cd " + q + " && pwd");
-  if (made.exit_code != 0)
-    throw cluster::ClusterError("cannot create " + folder + " on " + shell.describe() + ": " + cluster::first_line(made.err));
-  return cluster::first_line(made.out);
+  return make_cluster_folder(shell, planned_job_folder(project, user, design_id));
 }
 
 std::string last_line(const std::string& text) {
@@ -188,10 +125,6 @@ storage::Design reread(Home& home, const storage::Project& project, std::int64_t
 
 }  // namespace
 
-bool ClusterJobRequest::given() const {
-  return nodes || ntasks || cpus_per_task || !time.empty() || !partition.empty() || !account.empty();
-}
-
 bool ClusterCheckReport::ok() const {
   for (const auto& c : checks)
     if (!c.ok) return false;
@@ -204,7 +137,7 @@ std::string version_line() {
 
 ClusterSubmission submit_cluster_design(Home& home, const storage::User& user, const ProjectDesignRequest& request,
                                         const ClusterJobRequest& given) {
-  check(given);
+  check_request(given);
   storage::Workspace& workspace = home.workspace();
   const storage::Project project = project_or_active(home, user, request.project);
   if (!project.cluster)
@@ -212,7 +145,7 @@ ClusterSubmission submit_cluster_design(Home& home, const storage::User& user, c
                          "--partition and --account are for a cluster project");
   storage::Designs designs(workspace, project);
   storage::ClusterJobs jobs(workspace, project);
-  const cluster::Shell shell = shell_of(project);
+  const cluster::Shell shell = cluster_shell(project);
 
   auto latest = designs.latest();
   if (latest && latest->state == storage::DesignState::running) {
@@ -226,29 +159,36 @@ ClusterSubmission submit_cluster_design(Home& home, const storage::User& user, c
   }
 
   ClusterSubmission out{project, {}, {}, false, shell.describe()};
-  const auto previous = latest ? jobs.find(latest->id) : std::nullopt;
-  if (latest && latest->state == storage::DesignState::interrupted && previous && !request.fresh) {
-    // Submitted again: the job resumes the design from the checkpoint in its folder.
-    const ClusterJobRequest settings = merged(previous->settings, given);
-    check(settings);
-    out.design = designs.resume(latest->id, std::string(storage::kSlurmOwnerPrefix) + "submitting");
-    out.resubmitted = !previous->job_id.empty();
+  // Whatever stops a submission, the design is left interrupted, with the cluster's one-line
+  // reason as its note: run-design submits it again.
+  const auto submitting = [&](const std::function<void()>& submit) {
     try {
-      // A first submission that never reached Slurm (an unreachable host, say) is made anew.
-      const bool never_submitted = previous->job_id.empty();
-      const std::string folder = never_submitted ? make_job_folder(shell, project, user, out.design.id) : previous->folder;
-      const std::string mission = never_submitted ? load_mission(out.design.mission).document : "";
-      const std::string job_id = submit_job(shell, project, out.design, folder, mission, settings);
-      jobs.submitted(out.design.id, job_id, folder, settings_document(settings).dump());
-      designs.set_owner(out.design.id, slurm_owner(job_id, project));
+      submit();
     } catch (const cluster::ClusterError& e) {
       designs.release(out.design.id, out.design.owner);
       jobs.observed(out.design.id, "", e.what());
       throw;
     } catch (...) {
-      designs.release(out.design.id, out.design.owner);  // run-design submits it again
+      designs.release(out.design.id, out.design.owner);
       throw;
     }
+  };
+  const auto previous = latest ? jobs.find(latest->id) : std::nullopt;
+  if (latest && latest->state == storage::DesignState::interrupted && previous && !request.fresh) {
+    // Submitted again: the job resumes the design from the checkpoint in its folder.
+    const ClusterJobRequest settings = merged(previous->settings, given);
+    check_request(settings);
+    out.design = designs.resume(latest->id, std::string(storage::kSlurmOwnerPrefix) + "submitting");
+    out.resubmitted = !previous->job_id.empty();
+    submitting([&] {
+      // A first submission that never reached Slurm (an unreachable host, say) is made anew.
+      const bool never_submitted = previous->job_id.empty();
+      const std::string folder = never_submitted ? make_job_folder(shell, project, user, out.design.id) : previous->folder;
+      const std::string mission = never_submitted ? load_mission(out.design.mission).document : "";
+      const std::string job_id = submit_job(shell, project, out.design, folder, mission, settings);
+      jobs.submitted(out.design.id, job_id, folder, settings_text(settings));
+      designs.set_owner(out.design.id, slurm_owner(job_id, project));
+    });
   } else {
     const std::uint64_t seed = request.seed ? *request.seed : random_seed();
     if (!project.mission) throw NotFound("project " + project.name + " has no mission; choose one with: swarmdesign set-mission");
@@ -257,22 +197,15 @@ ClusterSubmission submit_cluster_design(Home& home, const storage::User& user, c
     if (latest && latest->state == storage::DesignState::interrupted && request.fresh) designs.abandon(latest->id);
     out.design = designs.start({checked.choice.architectures_text(), checked.choice.flavours_text(), seed,
                                 std::string(storage::kSlurmOwnerPrefix) + "submitting"});
-    try {
+    submitting([&] {
       // Recorded before the cluster is asked anything, so that a failure has a row to note it
       // in and run-design can submit this design again.
-      jobs.submitted(out.design.id, "", planned_job_folder(project, user, out.design.id), settings_document(given).dump());
+      jobs.submitted(out.design.id, "", planned_job_folder(project, user, out.design.id), settings_text(given));
       const std::string folder = make_job_folder(shell, project, user, out.design.id);
       const std::string job_id = submit_job(shell, project, out.design, folder, checked.mission.document, given);
-      jobs.submitted(out.design.id, job_id, folder, settings_document(given).dump());
+      jobs.submitted(out.design.id, job_id, folder, settings_text(given));
       designs.set_owner(out.design.id, slurm_owner(job_id, project));
-    } catch (const cluster::ClusterError& e) {
-      designs.release(out.design.id, out.design.owner);
-      jobs.observed(out.design.id, "", e.what());
-      throw;
-    } catch (...) {
-      designs.release(out.design.id, out.design.owner);  // run-design submits it again
-      throw;
-    }
+    });
   }
   out.design = reread(home, project, out.design.id);
   out.job = *jobs.find(out.design.id);
@@ -294,7 +227,7 @@ std::optional<storage::DesignProgress> refresh_cluster_design(Home& home, const 
   }
   std::optional<storage::DesignProgress> progress;
   try {
-    const cluster::Shell shell = shell_of(project);
+    const cluster::Shell shell = cluster_shell(project);
     const cluster::JobStatus status = cluster::job_status(shell, job->job_id);
     if (!cluster::finished(status.state) && status.state != cluster::JobState::unknown) {
       jobs.observed(design.id, status.slurm_state, "");
@@ -333,7 +266,7 @@ StoppedDesign stop_design(Home& home, const storage::User& user, const std::opti
     storage::ClusterJobs jobs(home.workspace(), project);
     const auto job = jobs.find(latest->id);
     if (!job || job->job_id.empty()) throw Conflict("design " + std::to_string(latest->id) + " has no Slurm job to cancel");
-    const cluster::Shell shell = shell_of(project);
+    const cluster::Shell shell = cluster_shell(project);
     cluster::cancel(shell, job->job_id);
     // The job's folder comes home once its process is gone, so that status shows where the
     // design stopped (Slurm ends a cancelled job within its KillWait).
@@ -368,7 +301,7 @@ ClusterCheckReport check_project_cluster(Home& home, const storage::User& user, 
   report.project = project_or_active(home, user, name);
   if (!report.project.cluster)
     throw InvalidRequest("project " + report.project.name + " runs on this machine; cluster-check is for a cluster project");
-  const cluster::Shell shell = shell_of(report.project);
+  const cluster::Shell shell = cluster_shell(report.project);
   report.where = shell.describe();
   report.checks = cluster::check_cluster(shell, report.project.cluster->binary_or_default(), version_line(),
                                          report.project.cluster->workdir_or_default());

@@ -16,22 +16,11 @@
 
 #include "app/home.hpp"
 #include "app/project_design.hpp"
+#include "app/slurm_jobs.hpp"
 #include "cluster/cluster_check.hpp"
 #include "storage/cluster_jobs.hpp"
 
 namespace sd::app {
-
-/// How long a submission may take before a design or experiment still waiting for its job id
-/// is taken for one whose submitting process stopped (it then becomes interrupted).
-inline constexpr std::int64_t kSubmissionGraceSeconds = 300;
-
-/// The sbatch settings a user may give run-design (empty or nullopt: Slurm's defaults, or
-/// those of the design's last submission).
-struct ClusterJobRequest {
-  std::optional<int> nodes, ntasks, cpus_per_task;
-  std::string time, partition, account;
-  bool given() const;
-};
 
 struct ClusterSubmission {
   storage::Project project;

@@ -6,7 +6,6 @@
 #include "app/projects.hpp"
 #include "cluster/slurm.hpp"
 #include "cluster/transfer.hpp"
-#include "design/design_space.hpp"
 #include "experiments/protocol.hpp"
 #include "missions/catalogue.hpp"
 #include "storage/clock.hpp"
@@ -17,24 +16,14 @@ namespace sd::app {
 
 namespace {
 
-cluster::Shell shell_of(const storage::Project& project) {
-  return cluster::Shell::for_cluster(project.cluster->host, project.cluster->user);
-}
-
 /// Cluster experiments are owned by their array, whose id lives in cluster_array_jobs.
 std::string array_owner(const storage::Project& project) {
   return std::string(storage::kSlurmOwnerPrefix) + "array@" + project.cluster->host;
 }
 
-std::string flags_of(const std::string& comma_list) {
-  std::string out;
-  for (const auto& name : design::split_list(comma_list)) out += " --" + name;
-  return out;
-}
-
 /// Task i makes the design on line i+1 of tasks.txt (its folder, mission file, budget, seed
 /// and space), started or resumed from the checkpoint in its folder.
-std::string array_body(const std::string& folder, const std::string& binary, bool mpi) {
+std::string array_body(const std::string& folder, const std::string& binary, const ClusterJobRequest& request) {
   return "set -u\n"
          "cd " + cluster::shell_quote(folder) + " || exit 1\n"
          "set -- $(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" tasks.txt)\n"
@@ -46,19 +35,7 @@ std::string array_body(const std::string& folder, const std::string& binary, boo
          "else\n"
          "  set -- design --mission \"$mission\" --budget \"$budget\" --seed \"$seed\" \"$@\" --out \"$PWD/design\"\n"
          "fi\n" +
-         (mpi ? "mpirun " : "") + cluster::shell_path(binary) +
-         " \"$@\" --threads \"${SLURM_CPUS_PER_TASK:-1}\" --json > result.part && mv result.part result.json\n";
-}
-
-std::string settings_text(const ClusterJobRequest& r) {
-  nlohmann::json out = nlohmann::json::object();
-  if (r.nodes) out["nodes"] = *r.nodes;
-  if (r.ntasks) out["ntasks"] = *r.ntasks;
-  if (r.cpus_per_task) out["cpus_per_task"] = *r.cpus_per_task;
-  if (!r.time.empty()) out["time"] = r.time;
-  if (!r.partition.empty()) out["partition"] = r.partition;
-  if (!r.account.empty()) out["account"] = r.account;
-  return out.dump();
+         design_command_line(binary, request);
 }
 
 std::string design_folder_name(std::int64_t id) {
@@ -72,6 +49,7 @@ std::string design_folder_name(std::int64_t id) {
 ClusterExperimentSubmission submit_cluster_experiment(Home& home, const storage::User& user,
                                                       const PlannedExperiment& plan, const ClusterJobRequest& given,
                                                       const std::optional<std::string>& name, unsigned threads) {
+  check_request(given);
   for (const auto& d : plan.designs)
     if (d.method != "automode")
       throw InvalidRequest("condition " + d.condition + " uses EvoStick, which runs on this machine only; run this "
@@ -79,7 +57,7 @@ ClusterExperimentSubmission submit_cluster_experiment(Home& home, const storage:
   ClusterExperimentSubmission out;
   out.project = project_or_active(home, user, name);
   if (!out.project.cluster) throw std::logic_error("submit_cluster_experiment on a local project");
-  const cluster::Shell shell = shell_of(out.project);
+  const cluster::Shell shell = cluster_shell(out.project);
   out.where = shell.describe();
   storage::Experiments store(home.workspace(), out.project);
   storage::ClusterJobs jobs(home.workspace(), out.project);
@@ -130,11 +108,7 @@ ClusterExperimentSubmission submit_cluster_experiment(Home& home, const storage:
   for (const auto& d : to_make) tasks.push_back(d.id);
   try {
     jobs.array_submitted(out.experiment.id, "", planned, settings_text(given), tasks);
-    const std::string q = cluster::shell_path(planned);
-    const auto made = shell.run_checked("mkdir -p " + q + " && cd " + q + " && pwd");
-    if (made.exit_code != 0)
-      throw cluster::ClusterError("cannot create " + planned + " on " + shell.describe() + ": " + cluster::first_line(made.err));
-    const std::string folder = cluster::first_line(made.out);
+    const std::string folder = make_cluster_folder(shell, planned);
     // One file per mission, one line per task: a handful of writes, however many designs.
     std::map<std::string, std::string> mission_files;
     std::string lines;
@@ -143,21 +117,11 @@ ClusterExperimentSubmission submit_cluster_experiment(Home& home, const storage:
       if (fresh) cluster::write_file(shell, folder + "/" + it->second, load_mission(d.plan.mission).document);
       store.set_stage(d.id, storage::DesignStage::designing);
       lines += design_folder_name(d.id) + " " + it->second + " " + std::to_string(d.plan.budget) + " " +
-               std::to_string(d.plan.seed) + flags_of(d.plan.architectures) + flags_of(d.plan.flavours) + "\n";
+               std::to_string(d.plan.seed) + space_flags(d.plan.architectures, d.plan.flavours) + "\n";
     }
     cluster::write_file(shell, folder + "/tasks.txt", lines);
-    cluster::JobSettings settings;
-    settings.job_name = "sd-" + out.project.name + "-" + out.experiment.name;
-    settings.nodes = given.nodes;
-    settings.ntasks = given.ntasks;
-    settings.cpus_per_task = given.cpus_per_task;
-    settings.time = given.time;
-    settings.partition = given.partition;
-    settings.account = given.account;
-    settings.output = folder + "/slurm-%A_%a.out";
-    settings.workdir = folder;
-    const bool mpi = (given.ntasks && *given.ntasks > 1) || (given.nodes && *given.nodes > 1);
-    const std::string body = array_body(folder, out.project.cluster->binary_or_default(), mpi);
+    const auto settings = job_settings(given, "sd-" + out.project.name + "-" + out.experiment.name, folder, "slurm-%A_%a.out");
+    const std::string body = array_body(folder, out.project.cluster->binary_or_default(), given);
     cluster::write_file(shell, folder + "/array.sh",
                         cluster::sbatch_array_script(settings, static_cast<int>(tasks.size()), body), true);
     const std::string job_id = cluster::submit(shell, folder + "/array.sh");
@@ -189,7 +153,7 @@ void refresh_cluster_experiment(Home& home, const storage::Project& project, con
     return;
   }
   try {
-    const cluster::Shell shell = shell_of(project);
+    const cluster::Shell shell = cluster_shell(project);
     const auto states = cluster::array_status(shell, job->job_id);
     const auto protocol = experiments::protocol_from_json(nlohmann::json::parse(experiment.protocol));
     std::vector<std::string> left;  // designs whose task ended without a result
