@@ -86,7 +86,10 @@ export function initMonitor({ onWatch, missions }) {
     const race = lastRace(s);
     const alive = race ? race.configurations.filter((c) => c.eliminated_after === null || c.eliminated_after === undefined).length : progress.race_configurations;
     $('alive').textContent = alive === undefined ? '–' : String(alive);
-    $('design-state').textContent = `${design.state}${s.running_here ? ' (here)' : ''}${progress.finish_reason ? ` · ${progress.finish_reason}` : ''}`;
+    // A cluster project's design runs as a Slurm job: its state, and the last problem in one line.
+    const job = s.cluster_job;
+    const slurm = job ? ` · Slurm job ${job.job_id ?? '(not submitted)'}${job.slurm_state ? ` ${job.slurm_state}` : ''}${job.note ? ` · ${job.note}` : ''}` : '';
+    $('design-state').textContent = `${design.state}${s.running_here ? ' (here)' : ''}${slurm}${progress.finish_reason ? ` · ${progress.finish_reason}` : ''}`;
     $('design-start').disabled = design.state === 'running';
     $('design-stop').disabled = design.state !== 'running';
 
