@@ -135,8 +135,14 @@ void MpiEvaluator::evaluate(const Mission& mission, std::span<const EvaluationTa
     ++in_flight[static_cast<std::size_t>(rank)];
     ++chunks_;
   };
+  // Every rank gets a chunk, then a second one (to work on while its first answer travels)
+  // only as long as what is left exceeds rank 0's own share: on a narrow batch rank 0 would
+  // otherwise wait idle for a rank working off its second chunk.
+  const std::size_t share_here = (tasks.size() * static_cast<std::size_t>(width_[0]) + static_cast<std::size_t>(total_width_) - 1) /
+                                 static_cast<std::size_t>(total_width_);
   for (int round = 0; round < kChunksInFlight; ++round)
-    for (int r = 1; r < session_.size() && next < tasks.size(); ++r) hand_out(r);
+    for (int r = 1; r < session_.size() && next < tasks.size(); ++r)
+      if (round == 0 || tasks.size() - next > share_here) hand_out(r);
 
   std::string failure;
   auto idle = std::chrono::microseconds(5);
