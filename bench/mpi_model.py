@@ -118,6 +118,27 @@ def merge_first(steps, first_test):
     return merged
 
 
+def fill_ahead(steps, first_test, ranks, max_ahead=8):
+    """The design's batching since a race fills idle workers: a batch takes the steps up to the
+    first test, then the next steps of the same race while it is narrower than the ranks (at most
+    max_ahead steps past the one it serves). Only runs the race used are counted: a run made
+    ahead for a configuration eliminated first sits on a rank that would have idled."""
+    out, by_iteration = [], {}
+    for s in steps:
+        by_iteration.setdefault(s["iteration"], []).append(s)
+    for iteration in sorted(by_iteration):
+        race = sorted(by_iteration[iteration], key=lambda s: s["step"])
+        i = 0
+        while i < len(race):
+            k, width, j = race[i]["step"], race[i]["width"], i + 1
+            while j < len(race) and race[j]["step"] <= k + max_ahead and (race[j]["step"] <= first_test or width < ranks):
+                width += race[j]["width"]
+                j += 1
+            out.append(width)
+            i = j
+    return out
+
+
 def steps_from_db(path):
     """Race steps of a design.db: runs per (iteration, position), in the order they ran."""
     c = sqlite3.connect(f"file:{path}?mode=ro", uri=True)
@@ -223,6 +244,13 @@ def main():
     for name, batch in models.items():
         for b, ws in batchings.items():
             r50[f"{name}_{b}"] = first_below_half(lambda r: base / design_time(n, ws, r, t, o, m, batch) / r)
+    for row in rows:
+        fw = fill_ahead(steps, args.first_test, row["ranks"])
+        wall = design_time(n, fw, row["ranks"], t, o, m)
+        row["formula_filled"] = {"wall_s": wall, "speed_up": base / wall, "efficiency": base / wall / row["ranks"],
+                                 "batches": len(fw)}
+    r50["formula_filled"] = first_below_half(
+        lambda r: base / design_time(n, fill_ahead(steps, args.first_test, r), r, t, o, m) / r)
     # With unlimited ranks every batch still takes t, every step o: the ceiling of speed-up.
     ceiling = {b: base / (n * o + len(ws) * t) for b, ws in batchings.items()}
 
@@ -269,6 +297,15 @@ def main():
                 pct(row["schedule_step"]["efficiency"]), pct(row["schedule_merged"]["efficiency"])))
     print("  ceiling with unlimited ranks (every step >= o, every batch >= t): speed-up %.1f step by step, %.1f merged"
           % (ceiling["step"], ceiling["merged"]))
+    print()
+    print("  filled (the design now): after the first test too, a batch narrower than the ranks takes the same")
+    print("  configurations' runs on the next instances (up to 8 ahead); formula, runs the race used only:")
+    print("  %5s | %8s %8s %5s %8s" % ("R", "wall s", "speed-up", "eff", "batches"))
+    for row in rows:
+        f = row["formula_filled"]
+        print("  %5d | %8.2f %8.1f %5s %8d" % (row["ranks"], f["wall_s"], f["speed_up"], pct(f["efficiency"]), f["batches"]))
+    print("  filled: racing stops scaling from R = %s; what remains is o, paid by rank 0 at every step (%d steps x %.2f ms"
+          " = %.1f s)" % (r50["formula_filled"], n, o * 1e3, n * o))
     top = rows[-1]
     if top["ranks"] > 1:
         c = top["chunks"]["merged"]

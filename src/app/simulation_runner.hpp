@@ -3,6 +3,7 @@
 // seed) become evaluation tasks (control software, seed, key = configuration id) for whichever
 // Evaluator the job runs on — threads here, MPI ranks or a server's pool elsewhere. Costs are
 // the mission's scores, negated when the mission is maximised (irace minimises).
+#include <algorithm>
 #include <chrono>
 #include <span>
 #include <unordered_map>
@@ -28,6 +29,7 @@ class SimulationRunner final : public design::ExperimentRunner {
   /// Wall time spent inside run(), for the optimiser's overhead.
   double evaluation_seconds() const { return evaluation_seconds_; }
   int workers() const { return evaluator_.workers(); }
+  std::size_t parallelism() const override { return static_cast<std::size_t>(std::max(1, evaluator_.workers())); }
 
  private:
   const Mission& mission_;

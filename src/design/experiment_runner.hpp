@@ -24,6 +24,9 @@ class ExperimentRunner {
   virtual ~ExperimentRunner() = default;
   /// Evaluates every experiment; costs[i] belongs to experiments[i]. May throw.
   virtual void run(std::span<const Experiment> experiments, std::span<double> costs) = 0;
+  /// Experiments it runs at once (threads, MPI ranks): a race fills a narrower step up to it
+  /// with the same configurations' runs on the next instances (race.cpp).
+  virtual std::size_t parallelism() const { return 1; }
 };
 
 /// Evaluates a batch on T workers of the process's Executor (a cost function with no simulator
@@ -36,6 +39,7 @@ class ThreadedRunner final : public ExperimentRunner {
   /// threads == 0: one per hardware thread.
   explicit ThreadedRunner(CostFunction cost, unsigned threads = 0);
   void run(std::span<const Experiment> experiments, std::span<double> costs) override;
+  std::size_t parallelism() const override { return threads_; }
   unsigned threads() const { return threads_; }
 
  private:

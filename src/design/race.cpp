@@ -115,6 +115,10 @@ RaceState start_race(const RaceSettings& settings, std::vector<int> config_ids, 
   return s;
 }
 
+/// How many instances ahead of the current one a batch may reach for: enough to fill idle
+/// workers on a race's narrowest steps, few enough that little is wasted when the race ends.
+constexpr std::size_t kMaxInstancesAhead = 8;
+
 std::size_t race_step(RaceState& s, const RaceSettings& settings, RaceEnvironment& env) {
   if (s.finished) return 0;
   const std::size_t k = s.next_task;
@@ -158,12 +162,15 @@ std::size_t race_step(RaceState& s, const RaceSettings& settings, RaceEnvironmen
   }
   while (s.results.size() < k) s.results.emplace_back(ncols, std::nan(""));
 
-  // Run the batch: every alive configuration lacking a result on this instance. Before the
-  // first test, the instances up to it go in the same batch: nothing can be eliminated before
-  // then, so their runs would be asked for anyway, and one wide batch keeps every worker (a
-  // thread, an MPI rank) busy where a race's first narrow steps would leave most idle. Their
-  // costs wait in s.ahead until their step takes them; runs are deterministic, so the race,
-  // its results and their order are the same as step by step.
+  // Run the batch: every alive configuration lacking a result on this instance, and runs of
+  // the same configurations on the next instances, evaluated ahead:
+  // - before the first test, every instance up to it: nothing can be eliminated before then,
+  //   so those runs would be asked for anyway;
+  // - after it, while the batch is narrower than the runner's workers (a race's late steps are
+  //   as narrow as its few survivors): a run of a configuration eliminated before its step is
+  //   wasted, but on a worker that would have idled.
+  // Their costs wait in s.ahead until their step takes them; runs are deterministic, so the
+  // race, its results and their order are the same as step by step, whatever the workers.
   const std::size_t position = s.position_of(k);
   std::vector<double> costs(which_exe.size(), std::nan(""));
   std::vector<Experiment> batch;
@@ -182,8 +189,10 @@ std::size_t race_step(RaceState& s, const RaceSettings& settings, RaceEnvironmen
     batch.push_back(experiment(which_exe[e], position));
     now.push_back(e);
   }
+  const std::size_t workers = env.runner.parallelism();
   if (!batch.empty())
-    for (std::size_t later = k + 1; later <= std::min(first_test, s.n_tasks); ++later) {
+    for (std::size_t later = k + 1; later <= s.n_tasks && later <= k + kMaxInstancesAhead; ++later) {
+      if (later > first_test && batch.size() >= workers) break;
       const std::size_t at = s.position_of(later);
       if (at > env.instances.size()) break;
       for (std::size_t c : which_exe) {

@@ -251,6 +251,33 @@ TEST(design_IteratedRace, RunsUpToTheFirstTestGoOutAsOneBatchWithTheSameResult) 
   EXPECT_EQ(state_to_json(race.state()).dump(), state_to_json(same.state()).dump());
 }
 
+TEST(design_IteratedRace, WorkersThatANarrowStepWouldLeaveIdleTakeTheNextInstancesWithTheSameResult) {
+  // A runner with many workers: narrow steps after the first test are filled with the same
+  // configurations' runs on the next instances.
+  struct Wide final : ExperimentRunner {
+    std::size_t workers = 1, runs = 0;
+    std::vector<std::size_t> sizes;
+    void run(std::span<const Experiment> experiments, std::span<double> costs) override {
+      sizes.push_back(experiments.size());
+      runs += experiments.size();
+      for (std::size_t i = 0; i < experiments.size(); ++i) costs[i] = synthetic_cost(experiments[i]);
+    }
+    std::size_t parallelism() const override { return workers; }
+  };
+  const ParameterSpace s = synthetic_space();
+  Wide one, many;
+  many.workers = 64;
+  IteratedRace narrow(s, options(1200, 9), one);
+  IteratedRace wide(s, options(1200, 9), many);
+  narrow.run();
+  wide.run();
+  EXPECT_EQ(state_to_json(wide.state()).dump(), state_to_json(narrow.state()).dump());
+  // Fewer, wider batches; some runs made ahead were never asked for (their configuration was
+  // eliminated first), which costs idle workers only.
+  EXPECT_LT(many.sizes.size(), one.sizes.size());
+  EXPECT_GE(many.runs, one.runs);
+}
+
 TEST(design_IteratedRace, RefusesAForeignCheckpoint) {
   const ParameterSpace s = synthetic_space();
   ThreadedRunner runner(synthetic_cost, 1);
