@@ -110,7 +110,7 @@ void MpiEvaluator::evaluate(const Mission& mission, std::span<const EvaluationTa
   }
   const std::lock_guard lock(ranks_mutex());
   const auto started = std::chrono::steady_clock::now();
-  ++batches_;
+  const auto batch = static_cast<std::uint64_t>(++batches_);
   share_mission(mission);
 
   // Each control software is written as a string once per batch.
@@ -127,7 +127,7 @@ void MpiEvaluator::evaluate(const Mission& mission, std::span<const EvaluationTa
   auto hand_out = [&](int rank) {
     const std::size_t count = std::min(chunk_size(tasks.size(), width_[static_cast<std::size_t>(rank)], total_width_),
                                        tasks.size() - next);
-    WorkChunk chunk{id_, next, threads_, mission.digest, {}};
+    WorkChunk chunk{id_, batch, next, threads_, mission.digest, {}};
     for (std::size_t i = next; i < next + count; ++i)
       chunk.tasks.push_back({tasks[i].key, tasks[i].seed, text_of(tasks[i].software)});
     send(rank, kWorkTag, encode(chunk));
@@ -157,15 +157,18 @@ void MpiEvaluator::evaluate(const Mission& mission, std::span<const EvaluationTa
       std::vector<char> bytes(static_cast<std::size_t>(size));
       MPI_Recv(bytes.data(), size, MPI_CHAR, status.MPI_SOURCE, status.MPI_TAG, session_.comm(), MPI_STATUS_IGNORE);
       const int rank = status.MPI_SOURCE;
-      --in_flight[static_cast<std::size_t>(rank)];
       std::size_t count = 0;
       if (status.MPI_TAG == kResultTag) {
         const ChunkScores result = decode_scores(bytes);
+        if (result.batch != batch) continue;  // of a batch an exception abandoned
+        --in_flight[static_cast<std::size_t>(rank)];
         count = result.scores.size();
         if (result.first + count > scores.size()) throw WireError("rank " + std::to_string(rank) + " answered out of range");
         std::copy(result.scores.begin(), result.scores.end(), scores.begin() + static_cast<std::ptrdiff_t>(result.first));
       } else if (status.MPI_TAG == kFailureTag) {
         const ChunkFailure result = decode_failure(bytes);
+        if (result.batch != batch) continue;
+        --in_flight[static_cast<std::size_t>(rank)];
         // No more work goes out; the chunks still out are collected, so that no answer of
         // this batch is left for the next one to misread, and then the failure is thrown.
         if (failure.empty()) failure = "rank " + std::to_string(rank) + ": " + result.message;

@@ -56,9 +56,9 @@ class Worker {
     WorkChunk chunk;
     try {
       chunk = decode_work(bytes);
-      send(comm_, kResultTag, encode(ChunkScores{chunk.first, evaluate(chunk)}));
+      send(comm_, kResultTag, encode(ChunkScores{chunk.batch, chunk.first, evaluate(chunk)}));
     } catch (const std::exception& e) {
-      send(comm_, kFailureTag, encode(ChunkFailure{chunk.first, e.what()}));
+      send(comm_, kFailureTag, encode(ChunkFailure{chunk.batch, chunk.first, e.what()}));
     }
   }
 

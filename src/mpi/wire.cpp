@@ -81,6 +81,7 @@ MissionText decode_mission(const std::vector<char>& bytes) {
 std::vector<char> encode(const WorkChunk& chunk) {
   Writer w;
   w.put(chunk.evaluator);
+  w.put(chunk.batch);
   w.put(chunk.first);
   w.put(chunk.threads);
   w.put(chunk.mission_digest);
@@ -95,6 +96,7 @@ std::vector<char> encode(const WorkChunk& chunk) {
 
 std::vector<char> encode(const ChunkScores& scores) {
   Writer w;
+  w.put(scores.batch);
   w.put(scores.first);
   w.put(static_cast<std::uint64_t>(scores.scores.size()));
   for (const double s : scores.scores) w.put(s);
@@ -103,6 +105,7 @@ std::vector<char> encode(const ChunkScores& scores) {
 
 std::vector<char> encode(const ChunkFailure& failure) {
   Writer w;
+  w.put(failure.batch);
   w.put(failure.first);
   w.put(failure.message);
   return w.take();
@@ -112,6 +115,7 @@ WorkChunk decode_work(const std::vector<char>& bytes) {
   Reader r(bytes);
   WorkChunk chunk;
   chunk.evaluator = r.get<std::uint64_t>();
+  chunk.batch = r.get<std::uint64_t>();
   chunk.first = r.get<std::uint64_t>();
   chunk.threads = r.get<std::int32_t>();
   chunk.mission_digest = r.text();
@@ -130,6 +134,7 @@ WorkChunk decode_work(const std::vector<char>& bytes) {
 ChunkScores decode_scores(const std::vector<char>& bytes) {
   Reader r(bytes);
   ChunkScores out;
+  out.batch = r.get<std::uint64_t>();
   out.first = r.get<std::uint64_t>();
   const auto count = r.get<std::uint64_t>();
   if (count > bytes.size()) throw WireError("malformed message from another rank: score count");
@@ -142,6 +147,7 @@ ChunkScores decode_scores(const std::vector<char>& bytes) {
 ChunkFailure decode_failure(const std::vector<char>& bytes) {
   Reader r(bytes);
   ChunkFailure out;
+  out.batch = r.get<std::uint64_t>();
   out.first = r.get<std::uint64_t>();
   out.message = r.text();
   r.finish();

@@ -26,6 +26,7 @@ struct WireTask {
 
 struct WorkChunk {
   std::uint64_t evaluator = 0;  // which rank-0 evaluator (keys are promises within one)
+  std::uint64_t batch = 0;      // which of its batches (answers of an abandoned one are dropped)
   std::uint64_t first = 0;      // index of the first task in rank 0's batch
   std::int32_t threads = 0;     // threads the rank evaluates with (0: one per core)
   std::string mission_digest;
@@ -33,11 +34,13 @@ struct WorkChunk {
 };
 
 struct ChunkScores {
+  std::uint64_t batch = 0;
   std::uint64_t first = 0;
   std::vector<double> scores;
 };
 
 struct ChunkFailure {
+  std::uint64_t batch = 0;
   std::uint64_t first = 0;
   std::string message;
 };

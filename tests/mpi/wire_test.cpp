@@ -12,9 +12,10 @@ namespace sd::mpi {
 namespace {
 
 TEST(wire, WorkChunksRoundTripExactly) {
-  WorkChunk chunk{7, 42, 2, "abc123", {{-1, 9, "--fsm-config --nstates 1 --s0 0 --rwm0 5"}, {17, 1ULL << 40, ""}}};
+  WorkChunk chunk{7, 3, 42, 2, "abc123", {{-1, 9, "--fsm-config --nstates 1 --s0 0 --rwm0 5"}, {17, 1ULL << 40, ""}}};
   const WorkChunk back = decode_work(encode(chunk));
   EXPECT_EQ(back.evaluator, 7u);
+  EXPECT_EQ(back.batch, 3u);
   EXPECT_EQ(back.first, 42u);
   EXPECT_EQ(back.threads, 2);
   EXPECT_EQ(back.mission_digest, "abc123");
@@ -26,7 +27,7 @@ TEST(wire, WorkChunksRoundTripExactly) {
 }
 
 TEST(wire, ScoresKeepEveryBit) {
-  const ChunkScores scores{3, {0.1, -0.0, std::nextafter(1.0, 2.0), std::numeric_limits<double>::infinity(), 1e-310}};
+  const ChunkScores scores{9, 3, {0.1, -0.0, std::nextafter(1.0, 2.0), std::numeric_limits<double>::infinity(), 1e-310}};
   const ChunkScores back = decode_scores(encode(scores));
   ASSERT_EQ(back.scores.size(), scores.scores.size());
   for (std::size_t i = 0; i < scores.scores.size(); ++i) {
@@ -34,6 +35,7 @@ TEST(wire, ScoresKeepEveryBit) {
     EXPECT_EQ(back.scores[i], scores.scores[i]);
   }
   EXPECT_EQ(back.first, 3u);
+  EXPECT_EQ(back.batch, 9u);
 }
 
 TEST(wire, MissionsAndFailuresRoundTrip) {
@@ -41,13 +43,13 @@ TEST(wire, MissionsAndFailuresRoundTrip) {
   EXPECT_EQ(mission.digest, "d1");
   EXPECT_EQ(mission.document, "{\"name\": \"x\"}");
   EXPECT_EQ(mission.source, "built-in");
-  const ChunkFailure failure = decode_failure(encode(ChunkFailure{5, "the mission does not load here"}));
+  const ChunkFailure failure = decode_failure(encode(ChunkFailure{2, 5, "the mission does not load here"}));
   EXPECT_EQ(failure.first, 5u);
   EXPECT_EQ(failure.message, "the mission does not load here");
 }
 
 TEST(wire, TruncatedOrPaddedBuffersAreRefused) {
-  auto bytes = encode(WorkChunk{1, 0, 1, "d", {{1, 2, "software"}}});
+  auto bytes = encode(WorkChunk{1, 1, 0, 1, "d", {{1, 2, "software"}}});
   auto truncated = bytes;
   truncated.resize(bytes.size() - 3);
   EXPECT_THROW(decode_work(truncated), WireError);
