@@ -9,17 +9,13 @@
 #include "app/errors.hpp"
 #include "app/inputs.hpp"
 #include "app/projects.hpp"
+#include "app/version.hpp"
 #include "cluster/slurm.hpp"
 #include "cluster/transfer.hpp"
 #include "missions/catalogue.hpp"
-#include "evaluation/results_version.hpp"
 #include "storage/clock.hpp"
 #include "storage/design_store.hpp"
 #include "storage/lease.hpp"
-
-#ifndef SWARMDESIGN_VERSION
-#define SWARMDESIGN_VERSION "dev"
-#endif
 
 namespace sd::app {
 
@@ -117,11 +113,6 @@ std::optional<storage::DesignProgress> progress_there(const cluster::Shell& shel
   }
 }
 
-storage::Design reread(Home& home, const storage::Project& project, std::int64_t id) {
-  for (const auto& d : storage::Designs(home.workspace(), project).list())
-    if (d.id == id) return d;
-  throw NotFound("design " + std::to_string(id) + " is gone");
-}
 
 }  // namespace
 
@@ -131,9 +122,6 @@ bool ClusterCheckReport::ok() const {
   return true;
 }
 
-std::string version_line() {
-  return std::string("swarmdesign ") + SWARMDESIGN_VERSION + " (results version " + std::to_string(kResultsVersion) + ")";
-}
 
 ClusterSubmission submit_cluster_design(Home& home, const storage::User& user, const ProjectDesignRequest& request,
                                         const ClusterJobRequest& given) {
@@ -207,7 +195,7 @@ ClusterSubmission submit_cluster_design(Home& home, const storage::User& user, c
       designs.set_owner(out.design.id, slurm_owner(job_id, project));
     });
   }
-  out.design = reread(home, project, out.design.id);
+  out.design = storage::Designs(home.workspace(), project).get(out.design.id);
   out.job = *jobs.find(out.design.id);
   return out;
 }
@@ -222,10 +210,9 @@ std::optional<storage::DesignProgress> refresh_cluster_design(Home& home, const 
     if (job && storage::unix_now() - job->submitted_at < kSubmissionGraceSeconds) return std::nullopt;
     storage::Designs(home.workspace(), project).release(design.id, design.owner);
     if (job) jobs.observed(design.id, "", "its submission did not complete; run-design submits it again");
-    design = reread(home, project, design.id);
+    design = storage::Designs(home.workspace(), project).get(design.id);
     return std::nullopt;
   }
-  std::optional<storage::DesignProgress> progress;
   try {
     const cluster::Shell shell = cluster_shell(project);
     const cluster::JobStatus status = cluster::job_status(shell, job->job_id);
@@ -247,11 +234,11 @@ std::optional<storage::DesignProgress> refresh_cluster_design(Home& home, const 
       designs.release(design.id, design.owner);
       jobs.observed(design.id, status.slurm_state, ended_note(shell, *job, status));
     }
-    design = reread(home, project, design.id);
+    design = storage::Designs(home.workspace(), project).get(design.id);
   } catch (const cluster::ClusterError& e) {
     jobs.observed(design.id, "", e.what());
   }
-  return progress;
+  return std::nullopt;
 }
 
 StoppedDesign stop_design(Home& home, const storage::User& user, const std::optional<std::string>& name) {
@@ -291,8 +278,7 @@ StoppedDesign stop_design(Home& home, const storage::User& user, const std::opti
       std::this_thread::sleep_for(std::chrono::milliseconds(50));
     out.how = "stopped process " + std::to_string(owner->pid);
   }
-  out.design = reread(home, project, latest->id);
-  if (out.design.state == storage::DesignState::running) out.design = *designs.latest();
+  out.design = *designs.latest();  // a local design whose process is gone is found interrupted here
   return out;
 }
 

@@ -64,10 +64,6 @@ struct ClusterCheckReport {
 ClusterCheckReport check_project_cluster(Home& home, const storage::User& user,
                                          const std::optional<std::string>& project = std::nullopt);
 
-/// "swarmdesign 0.1.0 (results version N)": what --version prints, and what a cluster's
-/// swarmdesign must print for its runs to score as ours.
-std::string version_line();
-
 nlohmann::json cluster_job_document(const storage::ClusterJob& job);
 /// storage::DesignProgress back from stored_progress_document (a cluster's `design-status --json`).
 storage::DesignProgress stored_progress_from_document(const nlohmann::json& document);

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "cli/command_registry.hpp"
-#include "app/cluster_designs.hpp"
+#include "app/version.hpp"
 #ifdef SWARMDESIGN_WITH_MPI
 #include "mpi/session.hpp"
 #endif

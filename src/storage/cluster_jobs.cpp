@@ -1,5 +1,7 @@
 #include "storage/cluster_jobs.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include "storage/clock.hpp"
 #include "storage/errors.hpp"
 
@@ -48,12 +50,7 @@ void ClusterJobs::array_submitted(std::int64_t experiment_id, const std::string&
   auto owned = db.prepare("SELECT 1 FROM experiments WHERE id = ? AND project_id = ?");
   owned.bind(1, experiment_id).bind(2, project_.id);
   if (!owned.step()) throw NotFound("no experiment " + std::to_string(experiment_id) + " in project " + project_.name);
-  std::string list = "[";
-  for (std::size_t i = 0; i < tasks.size(); ++i) {
-    if (i > 0) list += ',';
-    list += std::to_string(tasks[i]);
-  }
-  list += "]";
+  const std::string list = nlohmann::json(tasks).dump();
   db.prepare("INSERT INTO cluster_array_jobs (experiment_id, job_id, folder, settings, tasks, slurm_state, note, "
              "submitted_at) VALUES (?1, nullif(?2, ''), ?3, ?4, ?5, nullif(?6, ''), NULL, ?7) "
              "ON CONFLICT (experiment_id) DO UPDATE SET job_id = nullif(?2, ''), folder = ?3, settings = ?4, "
@@ -80,14 +77,7 @@ std::optional<ClusterArrayJob> ClusterJobs::find_array(std::int64_t experiment_i
   if (!query.step()) return std::nullopt;
   ClusterArrayJob job{query.integer(0), query.text(1), query.text(2), query.text(3), {}, query.text(5), query.text(6),
                       query.integer(7)};
-  // The list is written above as "[id,id,...]".
-  const std::string list = query.text(4);
-  std::size_t at = 1;
-  while (at < list.size() && list[at] != ']') {
-    std::size_t end = list.find_first_of(",]", at);
-    job.tasks.push_back(std::stoll(list.substr(at, end - at)));
-    at = end + (list[end] == ',' ? 1 : 0);
-  }
+  job.tasks = nlohmann::json::parse(query.text(4)).get<std::vector<std::int64_t>>();
   return job;
 }
 

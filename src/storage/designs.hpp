@@ -70,11 +70,12 @@ class Designs {
   /// The current or last design, for `status`; running designs whose owner is gone are
   /// reported as interrupted.
   std::optional<Design> latest();
+  /// One design of the project as recorded now; NotFound otherwise.
+  Design get(std::int64_t design_id);
   std::vector<Design> list();
 
  private:
   void mark_dead_designs_interrupted();
-  Design get(std::int64_t design_id);
   void set_state(std::int64_t design_id, DesignState state, std::string_view from_states);
   void fail(std::int64_t design_id, std::string_view from_states);
 
