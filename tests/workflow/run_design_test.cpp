@@ -83,7 +83,9 @@ TEST_F(run_design, TheWholeWorkflowFromSignUpToATestedDesign) {
 }
 
 TEST_F(run_design, StatusReadsADetachedDesignWhileItRuns) {
-  project_with_budget(4000);
+  // Long enough to be still running when the refusals below are tried (race steps now go out
+  // in wider batches, and a 4000-run design could end between the status read and them).
+  project_with_budget(30000);
   const auto started = run({"run-design", "--detach", "--fsm", "--chocolate", "--seed", "1", "--threads", "1"});
   ASSERT_EQ(started.exit_code, 0) << started.err;
   EXPECT_NE(started.out.find("swarmdesign status"), std::string::npos) << started.out;
