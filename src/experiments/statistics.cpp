@@ -1,6 +1,7 @@
 #include "experiments/statistics.hpp"
 
 #include <algorithm>
+#include <boost/math/distributions/binomial.hpp>
 #include <boost/math/distributions/normal.hpp>
 #include <boost/math/distributions/students_t.hpp>
 #include <cmath>
@@ -226,6 +227,59 @@ ExpectedRanks expected_ranks(const std::vector<std::vector<double>>& values, con
   const double alpha = 1 - confidence;
   if (f.p_value < alpha) out.critical_difference = conover_mean_rank_cd(costs, f.rank_sums, alpha);
   return out;
+}
+
+WelchTest welch_t_test(std::span<const double> x, std::span<const double> y) {
+  const auto moments = [](std::span<const double> v) {
+    if (v.size() < 2) throw std::invalid_argument("Welch's t-test needs at least 2 values per sample");
+    double mean = 0.0;
+    for (const double value : v) {
+      if (!std::isfinite(value)) throw std::invalid_argument("Welch's t-test needs finite values");
+      mean += value;
+    }
+    mean /= static_cast<double>(v.size());
+    double sum_squares = 0.0;
+    for (const double value : v) sum_squares += (value - mean) * (value - mean);
+    return std::pair{mean, sum_squares / static_cast<double>(v.size() - 1) / static_cast<double>(v.size())};
+  };
+  const auto [mx, vx] = moments(x);  // vx, vy: squared standard errors
+  const auto [my, vy] = moments(y);
+  WelchTest out;
+  const double se2 = vx + vy;
+  if (se2 == 0.0) {
+    out.statistic = mx == my ? 0.0 : std::copysign(std::numeric_limits<double>::infinity(), mx - my);
+    out.df = static_cast<double>(x.size() + y.size() - 2);
+    out.p_value = mx == my ? 1.0 : 0.0;
+    return out;
+  }
+  out.statistic = (mx - my) / std::sqrt(se2);
+  out.df = se2 * se2 / (vx * vx / static_cast<double>(x.size() - 1) + vy * vy / static_cast<double>(y.size() - 1));
+  const boost::math::students_t t(out.df);
+  out.p_value = 2.0 * boost::math::cdf(boost::math::complement(t, std::abs(out.statistic)));
+  return out;
+}
+
+double sign_test_p_value(int successes, int trials) {
+  if (trials < 0 || successes < 0 || successes > trials) throw std::invalid_argument("sign test: 0 <= successes <= trials");
+  if (trials == 0) return 1.0;
+  // binom.test's two-sided p for p = 0.5: twice the smaller tail, capped at 1.
+  const boost::math::binomial b(trials, 0.5);
+  const int k = std::min(successes, trials - successes);
+  return std::min(1.0, 2.0 * boost::math::cdf(b, k));
+}
+
+double spearman_rho(std::span<const double> x, std::span<const double> y) {
+  if (x.size() != y.size() || x.size() < 2) throw std::invalid_argument("Spearman's rho needs two samples of the same size >= 2");
+  const std::vector<double> rx = sd::design::average_ranks(x), ry = sd::design::average_ranks(y);
+  const double n = static_cast<double>(x.size()), mean_rank = (n + 1.0) / 2.0;
+  double sxy = 0.0, sxx = 0.0, syy = 0.0;
+  for (std::size_t i = 0; i < rx.size(); ++i) {
+    sxy += (rx[i] - mean_rank) * (ry[i] - mean_rank);
+    sxx += (rx[i] - mean_rank) * (rx[i] - mean_rank);
+    syy += (ry[i] - mean_rank) * (ry[i] - mean_rank);
+  }
+  if (sxx == 0.0 || syy == 0.0) return std::numeric_limits<double>::quiet_NaN();
+  return sxy / std::sqrt(sxx * syy);
 }
 
 }  // namespace sd::experiments

@@ -1,6 +1,8 @@
 #pragma once
 // The statistics of the experiments report: per-mission comparisons of two conditions
-// (Wilcoxon rank-sum), box plots of the design scores, and the Friedman test across missions.
+// (Wilcoxon rank-sum), box plots of the design scores, and the Friedman test across missions;
+// and the agreement of two simulators' scores (Welch's t-test, sign test, Spearman's rho) that
+// the calibration against ARGoS checks.
 // Each function reproduces an R function (named in its comment) so that the report can be
 // checked against R; the Friedman rank arithmetic is shared with the race (design/statistics).
 #include <cstddef>
@@ -60,5 +62,24 @@ struct ExpectedRanks {
 /// >= 2 conditions, and higher_is_better has one entry per block.
 ExpectedRanks expected_ranks(const std::vector<std::vector<double>>& values,
                              const std::vector<bool>& higher_is_better, double confidence = 0.95);
+
+struct WelchTest {
+  double statistic = 0.0;  // t = (mean(x) - mean(y)) / sqrt(var(x)/nx + var(y)/ny)
+  double df = 0.0;         // Welch-Satterthwaite degrees of freedom
+  double p_value = 1.0;    // two-sided
+};
+/// R's t.test(x, y) (Welch, two-sided). When both samples are constant the test is undefined
+/// in R; here p is 1 if the constants are equal and 0 otherwise, so that two simulators that
+/// agree exactly pass and two that disagree exactly fail.
+/// Throws std::invalid_argument unless both samples have at least 2 finite values.
+WelchTest welch_t_test(std::span<const double> x, std::span<const double> y);
+
+/// R's binom.test(successes, trials, 0.5)$p.value: the two-sided sign test (1 when trials is 0).
+double sign_test_p_value(int successes, int trials);
+
+/// R's cor(x, y, method = "spearman"): Pearson's correlation of the average ranks.
+/// NaN when either sample is constant. Throws std::invalid_argument unless x and y have the
+/// same size >= 2.
+double spearman_rho(std::span<const double> x, std::span<const double> y);
 
 }  // namespace sd::experiments

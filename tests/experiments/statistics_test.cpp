@@ -440,3 +440,37 @@ TEST(experiments_Statistics, ExpectedRanksMatchR) {
   }
   EXPECT_GE(with_cd, 5) << "the data sets should exercise the critical difference";
 }
+
+// Reference values from R 4.2 (t.test, binom.test, cor(method = "spearman")).
+TEST(experiments_Statistics, WelchTestMatchesR) {
+  const std::vector<double> x{3.1, 4.5, 2.2, 8.9, 5.0, 6.1}, y{7.2, 6.6, 9.1, 8.0, 10.5};
+  const WelchTest t = welch_t_test(x, y);
+  EXPECT_NEAR(t.statistic, -2.7799873014646894, 1e-12);
+  EXPECT_NEAR(t.df, 8.6212964194514115, 1e-10);
+  EXPECT_NEAR(t.p_value, 0.0222775570094685, 1e-10);
+  const std::vector<double> a{1, 2, 3, 4, 5.5}, b{2, 4, 6, 8, 9, 11};
+  EXPECT_NEAR(welch_t_test(a, b).p_value, 0.0532107998388449, 1e-10);
+}
+
+TEST(experiments_Statistics, WelchTestOnConstantSamplesPassesOnlyWhenEqual) {
+  const std::vector<double> zeros(20, 0.0), ones(20, 1.0);
+  EXPECT_EQ(welch_t_test(zeros, zeros).p_value, 1.0);
+  EXPECT_EQ(welch_t_test(zeros, ones).p_value, 0.0);
+  EXPECT_THROW(welch_t_test(std::vector<double>{1.0}, zeros), std::invalid_argument);
+}
+
+TEST(experiments_Statistics, SignTestMatchesR) {
+  EXPECT_NEAR(sign_test_p_value(3, 15), 0.03515625, 1e-12);
+  EXPECT_NEAR(sign_test_p_value(12, 15), 0.03515625, 1e-12);
+  EXPECT_NEAR(sign_test_p_value(7, 15), 1.0, 1e-12);
+  EXPECT_NEAR(sign_test_p_value(0, 5), 0.0625, 1e-12);
+  EXPECT_NEAR(sign_test_p_value(12, 14), 0.012939453125, 1e-12);
+  EXPECT_EQ(sign_test_p_value(0, 0), 1.0);
+}
+
+TEST(experiments_Statistics, SpearmanMatchesR) {
+  EXPECT_NEAR(spearman_rho(std::vector<double>{1, 2, 3, 4, 5}, std::vector<double>{2, 1, 4, 3, 5}), 0.8, 1e-12);
+  EXPECT_NEAR(spearman_rho(std::vector<double>{1, 2, 2, 4, 5}, std::vector<double>{2, 1, 4, 4, 5}), 0.763157894736842, 1e-12);
+  EXPECT_NEAR(spearman_rho(std::vector<double>{10, 20, 30, 40}, std::vector<double>{4, 3, 2, 1}), -1.0, 1e-12);
+  EXPECT_TRUE(std::isnan(spearman_rho(std::vector<double>{1, 1, 1}, std::vector<double>{1, 2, 3})));
+}
