@@ -60,8 +60,10 @@ Actuation run_behaviour(const ModuleInstance& b, BehaviourMemory& memory, const 
       return bounded_wheels_towards(with_fallback(rm.attraction(alpha) - rm.proximity * 6.0));
     }
     case 45: {
+      // The BT branch's Repulsion applies rep once, inside A(rep): -A(rep) - 5 P (master and
+      // Chocolate multiply by rep again).
       const double alpha = std::trunc(prm[0]);
-      return bounded_wheels_towards(with_fallback(rm.attraction(alpha) * -alpha - rm.proximity * 5.0));
+      return bounded_wheels_towards(with_fallback(-rm.attraction(alpha) - rm.proximity * 5.0));
     }
     default:
       return {0.0, 0.0};

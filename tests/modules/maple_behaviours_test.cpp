@@ -1,6 +1,7 @@
 // Maple's actions (ids 40-45) follow the behaviour-tree code base (ARGoS3-AutoMoDe branch
 // BehaviorTree, dd7167c; modules-and-grammar.md §3.1-3.2, §4.5), not master: W(v) keeps the
-// inner wheel at or above -0.5 x 12 cm/s, and Exploration turns only at a reading >= 0.5 in front.
+// inner wheel at or above -0.5 x 12 cm/s, Exploration turns only at a reading >= 0.5 in front,
+// and Repulsion applies rep once.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -53,14 +54,14 @@ TEST(MapleActions, VectorLawsUseTheBoundedWheels) {
   ReferenceModel rm;
   rm.light = Vec2::polar(1.0, degrees_to_radians(170));  // light behind on the left
   rm.proximity = Vec2::polar(0.05, 0.3);
-  rm.rab_steps[0] = Vec2::polar(0.04, degrees_to_radians(-160));
+  rm.rab_steps[0] = Vec2::polar(0.1, degrees_to_radians(-160));  // every vector below is longer than 0.1
   Rng rng(3);
   BehaviourMemory m;
   expect_wheels(run_behaviour(module(42), m, rm, rng), bt_wheels(rm.light - rm.proximity * 5.0));
   expect_wheels(run_behaviour(module(43), m, rm, rng), bt_wheels(-rm.light - rm.proximity * 5.0));
   expect_wheels(run_behaviour(module(44, {4.7}), m, rm, rng), bt_wheels(rm.attraction(4.0) - rm.proximity * 6.0));
-  expect_wheels(run_behaviour(module(45, {4.9}), m, rm, rng),
-                bt_wheels(rm.attraction(4.0) * -4.0 - rm.proximity * 5.0));
+  // Repulsion: rep enters once, inside A(rep) (Chocolate: twice).
+  expect_wheels(run_behaviour(module(45, {4.9}), m, rm, rng), bt_wheels(-rm.attraction(4.0) - rm.proximity * 5.0));
   expect_wheels(run_behaviour(module(41), m, rm, rng), {0.0, 0.0, 0});
   // The phototaxis that turns around spins less hard than Chocolate's.
   const Actuation chocolate = run_behaviour(module(12), m, rm, rng);
