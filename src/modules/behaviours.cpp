@@ -4,6 +4,7 @@
 
 #include "core/math.hpp"
 #include "modules/arlequin.hpp"
+#include "modules/maple_behaviours.hpp"
 #include "simulator/epuck.hpp"
 
 namespace sd {
@@ -110,26 +111,20 @@ void prepare_behaviour(const ModuleInstance& behaviour) {
 Actuation run_behaviour(const ModuleInstance& b, BehaviourMemory& memory, const ReferenceModel& rm, Rng& rng) {
   const auto& prm = b.parameters;
   switch (b.id) {
-    // Chocolate, and Maple's identical actions (parameters: rwm | att | rep).
+    // Chocolate (parameters: rwm | att | rep).
     case 10:
-    case 40:
       return exploration(prm[0], memory, rm, rng);
     case 11:
-    case 41:
       return {0.0, 0.0};
     case 12:
-    case 42:
       return wheels_towards(with_fallback(rm.light - rm.proximity * 5.0));
     case 13:
-    case 43:
       return wheels_towards(with_fallback(-rm.light - rm.proximity * 5.0));
-    case 14:
-    case 44: {
+    case 14: {
       const double alpha = std::trunc(prm[0]);  // stored as UInt8 by AutoMoDe
       return wheels_towards(with_fallback(rm.attraction(alpha) - rm.proximity * 6.0));
     }
-    case 15:
-    case 45: {
+    case 15: {
       const double alpha = std::trunc(prm[0]);
       // alpha enters twice (inside A and outside): repulsion grows with rep^2.
       return wheels_towards(with_fallback(rm.attraction(alpha) * -alpha - rm.proximity * 5.0));
@@ -174,6 +169,9 @@ Actuation run_behaviour(const ModuleInstance& b, BehaviourMemory& memory, const 
       const double alpha = std::trunc(prm[0]);
       return coconut(rm.attraction(alpha) * -alpha, 5.0, b, 1, memory, rm, rng);
     }
+    // Maple: the BT branch's own laws (maple_behaviours.hpp).
+    case 40: case 41: case 42: case 43: case 44: case 45:
+      return maple::run_behaviour(b, memory, rm, rng);
     // Arlequin: the shipped network of the module (arlequin.hpp); no memory, no parameters.
     case 50:
     case 51:

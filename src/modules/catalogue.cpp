@@ -45,8 +45,9 @@ constexpr std::uint8_t kProx = kProximityInput, kLight = kLightInput, kRab = kRa
 
 std::vector<ModuleSpec> build_behaviours() {
   std::vector<ModuleSpec> b;
-  // Chocolate (RM1.2, ARGoS3-AutoMoDe master) and Maple (the same six as behaviour-tree
-  // actions; DEMI maps 40-45 to the Chocolate classes).
+  // Chocolate (RM1.2, ARGoS3-AutoMoDe master) and Maple (the same six, with the same
+  // parameters and inputs, as behaviour-tree actions; their laws are the BT branch's:
+  // maple_behaviours.hpp).
   for (const int base : {10, 40}) {
     b.push_back({base + 0, ModuleKind::Behaviour, "Exploration", {rwm()}, kProx});
     b.push_back({base + 1, ModuleKind::Behaviour, "Stop", {}, 0});

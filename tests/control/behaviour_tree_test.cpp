@@ -89,7 +89,7 @@ TEST(BehaviourTreeTicks, SequenceStarStaysOnABranchUntilItsConditionHolds) {
   a = r.step(c, 0.0);
   EXPECT_EQ(c.current_state(0), 6);
   EXPECT_DOUBLE_EQ(a.left_cm, 12.0);
-  EXPECT_DOUBLE_EQ(a.right_cm, -12.0);  // turning away from the light ahead
+  EXPECT_DOUBLE_EQ(a.right_cm, -6.0);  // turning away from the light ahead, inner wheel >= -6 (BT branch)
   // Still black: the Sequence* remembers branch 1.
   r.step(c, 0.0);
   EXPECT_EQ(c.current_state(0), 6);

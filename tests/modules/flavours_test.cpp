@@ -149,21 +149,7 @@ TEST(Coconut, AStimulusOverridesTheScheme) {
   expect_wheels(run_behaviour(module(34, {3.9, 0}), m, rm, rng), spec_wheels(rm.attraction_sum() * 9.0 - rm.proximity * 6.0));
 }
 
-TEST(Maple, ActionsAreTheChocolateLaws) {
-  ReferenceModel rm;
-  rm.light = Vec2::polar(1.0, 2.0);
-  rm.proximity = Vec2::polar(0.3, 0.4);
-  rm.rab_steps[0] = Vec2::polar(0.02, -1.0);  // one buffered step holds the whole sum
-  for (int digit = 0; digit <= 5; ++digit) {
-    Rng a(5), b(5);
-    BehaviourMemory ma, mb;
-    const double parameter = digit == 0 ? 7 : 3.5;
-    const Actuation chocolate = run_behaviour(module(10 + digit, {parameter}), ma, rm, a);
-    const Actuation maple = run_behaviour(module(40 + digit, {parameter}), mb, rm, b);
-    EXPECT_EQ(chocolate.left_cm, maple.left_cm) << digit;
-    EXPECT_EQ(chocolate.right_cm, maple.right_cm) << digit;
-  }
-}
+// Maple's actions have their own laws (the BT branch's): maple_behaviours_test.cpp.
 
 TEST(Flavours, EveryFlavoursConditionsAreChocolates) {
   ReferenceModel rm;
