@@ -24,6 +24,11 @@ struct ReferenceModel {
 
   // --- processed inputs of the current control step ---
   double ground = 0.5;          // majority-filtered floor: 0 black, 0.5 gray, 1 white
+  // The same filter with RM3.0's thresholds (demiurge-epuck-dao ReferenceModel3Dot0
+  // GetGroundReading: black below 0.1, else white above 0.8), which TuttiFrutti's floor
+  // conditions read. With RM1.x's 0.03 a noisy black floor (0 + U(-0.05, 0.05)) passes only
+  // 80 % of samples, so a robot on black reads gray at about one step in six.
+  double ground_rm3 = 0.5;
   // The two vectors keep their last value at a step that does not read them.
   Vec2 proximity;               // sum of proximity vectors, length clipped to 1 (RM1.2 Pv)
   Vec2 light;                   // unit vector to the light if any sensor reads > 0.2, else 0
@@ -52,6 +57,8 @@ struct ReferenceModel {
   static constexpr int kRabBufferSteps = 11;  // messages of this step and of the 10 before
   std::array<std::uint8_t, kGroundHistory> ground_black{}, ground_white{};  // per step
   int window_black = 0, window_white = 0;                                   // over the window
+  std::array<std::uint8_t, kGroundHistory> ground_black3{}, ground_white3{};  // RM3.0 thresholds
+  int window_black3 = 0, window_white3 = 0;
   int ground_slot = 0;                        // the slot the next step overwrites
   // Per step of the buffer: the sums over that step's messages, so that a buffer sum adds
   // 11 terms, not every message.

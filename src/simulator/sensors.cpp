@@ -293,8 +293,12 @@ void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, S
 }
 
 void sense_camera(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm) {
-  const double range_sq = model.camera_range * model.camera_range;
-  constexpr double kDz = epuck::kRgbLedElevation - epuck::kCameraElevation;
+  // argos3-epuck's rot_z_only camera (epuck_omnidirectional_camera_sensor.cpp) keeps an LED
+  // when |dx| and |dy| of its offset from the camera are both below the ground half-range
+  // 0.122 tan 70 deg: a square aligned with the world axes, not a disc, and the height
+  // difference does not count.
+  const double half_range = model.camera_range;
+  auto in_view = [half_range](Vec2 offset) { return std::abs(offset.x) < half_range && std::abs(offset.y) < half_range; };
   for (int i = 0; i < swarm.size; ++i) {
     const auto r = static_cast<std::size_t>(i);
     CameraBlob* out = swarm.blobs.data() + r * static_cast<std::size_t>(swarm.blobs_per_robot);
@@ -316,7 +320,7 @@ void sense_camera(const ArenaModel& arena, const RobotModel& model, SwarmState& 
       if (rgb == 0 || j == i) continue;
       const Vec2 led = swarm.position[j] + swarm.heading[j] * kRgbLedOffset;
       const Vec2 offset = led - p;
-      if (offset.squared_length() + kDz * kDz >= range_sq) continue;
+      if (!in_view(offset)) continue;
       if (!arena.camera_line_of_sight(camera, {led.x, led.y, epuck::kRgbLedElevation})) continue;
       add(rgb, offset);
     }
@@ -325,8 +329,7 @@ void sense_camera(const ArenaModel& arena, const RobotModel& model, SwarmState& 
       if (rgb == 0) continue;
       const ArenaLed& led = arena.leds[k];
       const Vec2 offset = led.position.xy() - p;
-      const double dz = led.position.z - epuck::kCameraElevation;
-      if (offset.squared_length() + dz * dz >= range_sq) continue;
+      if (!in_view(offset)) continue;
       if (!arena.camera_line_of_sight(camera, led.position, led.wall)) continue;
       add(rgb, offset);
     }

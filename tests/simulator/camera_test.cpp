@@ -27,18 +27,35 @@ TEST(Camera, SeesTheLitRearLedOfAnotherRobot) {
   EXPECT_EQ(s.blob_count[1], 0);            // robot 0's LEDs are off
 }
 
-TEST(Camera, RangeIsThreeDimensionalFromTheCameraHeight) {
+TEST(Camera, RangeIsASquareOfHalfSideTheGroundHalfRange) {
+  // argos3-epuck keeps an LED when |dx| and |dy| (world axes, camera to LED) are both below
+  // 0.122 tan 70 deg = 0.335 m; the height difference is not counted.
   ArenaModel arena;
   arena.compile();
-  const double dz = epuck::kCameraElevation - epuck::kRgbLedElevation;
-  const double horizontal = std::sqrt(0.335 * 0.335 - dz * dz);  // 0.3319 m
-  for (const auto& [gap, seen] : {std::pair{horizontal - 1e-4, true}, std::pair{horizontal + 1e-4, false}}) {
-    // The lit LED is 0.036 m behind robot 1's centre; robot 1 faces away from robot 0.
-    SwarmState s = robots({{{0, 0}, 0.0}, {{gap + 0.036, 0.0}, 0.0}});
+  struct Case {
+    Vec2 led;
+    bool seen;
+  };
+  const Case cases[] = {
+      {{0.3349, 0.0}, true},  {{0.3351, 0.0}, false},  // along an axis: 0.335 in the plane
+      {{0.33, 0.33}, true},                           // a corner of the square, 0.467 m away
+      {{0.0, -0.3349}, true}, {{-0.3351, 0.1}, false},
+  };
+  for (const Case& c : cases) {
+    // Robot 1 faces +x, so its lit rear LED is 0.036 m behind its centre.
+    SwarmState s = robots({{{0, 0}, 0.0}, {{c.led.x + 0.036, c.led.y}, 0.0}});
     s.led[1] = 0xff0000;
     sense_camera(arena, RobotModel{}, s);
-    EXPECT_EQ(s.blob_count[0] == 1, seen) << gap;
+    EXPECT_EQ(s.blob_count[0] == 1, c.seen) << c.led.x << ", " << c.led.y;
+    if (s.blob_count[0] == 1) {
+      EXPECT_NEAR(s.blobs[0].distance_cm, c.led.length() * 100.0, 1e-9);
+    }
   }
+  // The square is fixed to the world, not to the robot: turning does not change what is seen.
+  SwarmState t = robots({{{0, 0}, 0.7}, {{0.33 + 0.036, 0.33}, 0.0}});
+  t.led[1] = 0xff0000;
+  sense_camera(arena, RobotModel{}, t);
+  EXPECT_EQ(t.blob_count[0], 1);
 }
 
 TEST(Camera, RobotsNeverOccludeButWallsCanNearTheLed) {
