@@ -147,9 +147,10 @@ void sense_proximity(const ArenaModel& arena, const RobotModel& model, SwarmStat
       wall.segment_entries(rays, t);
       // A ray starting inside the wall does not see it (Chipmunk's segment query only tests
       // the sides its start lies in front of): a robot that starts inside a wall added after
-      // placement senses only what lies beyond. Origins are on a ring outside the body, so
-      // only such a robot, whose centre is within the ring of the wall, has to ask.
-      if (wall.distance(p, nullptr) < kRing)
+      // placement senses only what lies beyond. Only for such walls: a robot touching any
+      // wall has its nearest ring origin 1 mm inside it, and ARGoS would not see that wall
+      // either, but the shipped calibration (AAC, foraging) stands on the reading it gives.
+      if (wall.placed_after_robots && wall.distance(p, nullptr) < kRing)
         for (std::size_t k = 0; k < 8; ++k)
           if (t[k] == 0.0 && wall.contains({rays.ax[k], rays.ay[k]})) t[k] = 2.0;
       for (std::size_t k = 0; k < 8; ++k) {
