@@ -209,8 +209,9 @@ void Physics::project_contacts(const ArenaModel& arena, SwarmState& swarm) {
       const Wall& wall = arena.walls[c.b];
       const double gap = wall.distance(p, &normal) - kRadius;
       if (gap >= 0.0) continue;
-      // dynamics2d's contacts only stop the approach (Chipmunk's collision slop, 0.1 in ARGoS'
-      // metres, exceeds any overlap, so no bias pushes bodies apart): a robot that starts a
+      // dynamics2d's contacts only stop the approach, nothing pushes bodies apart (in the
+      // trace, epuck4's depth in the wall stays constant to 1e-10 m for 18 ticks; Chipmunk's
+      // default collision slop, 0.1, exceeds any overlap in metres): a robot that starts a
       // sub-step overlapping a wall -- placed into one that the loop function added after
       // placement -- keeps that overlap, and leaves only by driving out (ARGoS SCA seed 2:
       // epuck4 slides inside the back wall for 128 ticks). Only such walls keep overlaps: our
