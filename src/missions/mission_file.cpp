@@ -45,7 +45,7 @@ void read_walls(const Field& f, Mission& m) {
     } else if (item.has("box")) {
       // ARGoS <box size="sx,sy,sz"> with a yaw: local x and y extents rotated by the yaw.
       const Field b = item.at("box");
-      b.only({"center", "size", "yaw", "height"});
+      b.only({"center", "size", "yaw", "height", "placed_after_robots"});
       const Vec2 size = b.at("size").vec2();
       if (size.x <= 0 || size.y <= 0) b.at("size").fail("sizes must be positive");
       const double yaw = degrees_to_radians(b.number_or("yaw", 0.0));
@@ -53,18 +53,20 @@ void read_walls(const Field& f, Mission& m) {
       const Vec2 local_x = Vec2::polar(1.0, yaw), local_y = Vec2::polar(1.0, yaw + kPi / 2);
       arena.walls.push_back(size.y >= size.x ? make_wall(b.at("center").vec2(), local_y, size.y, size.x, height)
                                              : make_wall(b.at("center").vec2(), local_x, size.x, size.y, height));
+      arena.walls.back().placed_after_robots = b.boolean_or("placed_after_robots", false);
     } else if (item.has("regular_polygon")) {
       // The AutoMoDe dodecagon and its kin: one box per side, tangent to the inscribed circle.
       // Side k (0-based) is centred at polar angle first_angle + 360 k / sides; `omit` leaves
       // sides out (the Coconut unbounded workspace opens the dodecagon's three top sides).
       const Field p = item.at("regular_polygon");
-      p.only({"sides", "apothem", "length", "thickness", "height", "first_angle", "omit"});
+      p.only({"sides", "apothem", "length", "thickness", "height", "first_angle", "omit", "placed_after_robots"});
       const int sides = p.at("sides").integer_in(3, 64);
       const double apothem = p.at("apothem").positive();
       const double length = p.positive_or("length", 2.0 * apothem * math::tan(kPi / sides));
       const double thickness = p.positive_or("thickness", 0.01);
       const double height = p.positive_or("height", 0.08);
       const double first = degrees_to_radians(p.number_or("first_angle", 0.0));
+      const bool after = p.boolean_or("placed_after_robots", false);
       std::vector<bool> omitted(static_cast<std::size_t>(sides), false);
       if (p.has("omit")) {
         const Field omit = p.at("omit");
@@ -78,6 +80,7 @@ void read_walls(const Field& f, Mission& m) {
         if (omitted[static_cast<std::size_t>(k)]) continue;
         const double phi = first + kTwoPi * k / sides;
         arena.walls.push_back(make_wall(Vec2::polar(apothem, phi), Vec2::polar(1.0, phi + kPi / 2), length, thickness, height));
+        arena.walls.back().placed_after_robots = after;
       }
     }
   }

@@ -39,9 +39,14 @@ double Wall::distance(Vec2 p, Vec2* outward_normal) const {
     if (outward_normal) *outward_normal = (axis * ex + n * ey) * (1.0 / dist);
     return dist;
   }
-  // Inside the box: leave through the thin side.
+  // Inside the box: the nearest side (across the wall unless p is nearer an end).
+  const double across = half_thickness - std::abs(ly), along = half_length - std::abs(lx);
+  if (along < across) {
+    if (outward_normal) *outward_normal = lx >= 0.0 ? axis : -axis;
+    return -along;
+  }
   if (outward_normal) *outward_normal = ly >= 0.0 ? n : -n;
-  return -(half_thickness - std::abs(ly));
+  return -across;
 }
 
 namespace {

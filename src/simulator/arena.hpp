@@ -27,17 +27,22 @@ struct Wall {
   double half_thickness = 0.0;
   double height = 0.08;
   std::uint32_t led_color = 0; // RGB of the wall's LEDs (0 = none), for coloured arenas
+  /// Added by the loop function after the robots were placed (ARGoS SCA adds its shelter in
+  /// Init, after MoveRobots): placement does not avoid it, so a robot may start inside it.
+  bool placed_after_robots = false;
 
   Vec2 normal() const { return {-axis.y, axis.x}; }
   double bounding_radius() const;
   /// Distance from p to the wall's rectangle and the unit normal pointing from the wall to p.
+  /// Inside, minus the distance to the nearest side, whose outward normal it gives (the
+  /// side Chipmunk's circle-polygon test pushes a body out of: the least penetration).
   double distance(Vec2 p, Vec2* outward_normal) const;
   /// For limit >= 0, true only if distance(p, nullptr) > limit, without its square root:
   /// most walls a grid cell lists are far out of a robot's reach, and this rules them out
   /// first. Outside the wall, the larger of the gaps along its axis and across it bounds the
   /// distance from below, and kBoundMargin covers rounding, so no wall the exact test would
-  /// keep is ever ruled out. (Inside, distance() is the depth across the wall, which the
-  /// gap along it does not bound: hence no negative limit.)
+  /// keep is ever ruled out. (Inside, distance() is minus the depth to the nearest side,
+  /// which the larger gap does not bound: hence no negative limit.)
   bool surely_beyond(Vec2 p, double limit) const {
     const Vec2 d = p - center;
     const double gap = std::max(std::abs(dot(d, axis)) - half_length, std::abs(dot(d, normal())) - half_thickness);
@@ -45,7 +50,14 @@ struct Wall {
   }
   static constexpr double kBoundMargin = 1e-9;  // m: orders of magnitude above any rounding in an arena
   /// First parameter t in [0, 1] where the segment a->b enters the rectangle, or a value > 1.
+  /// A segment starting inside "enters" at 0.
   double segment_entry(Vec2 a, Vec2 b) const;
+  /// True if p lies strictly inside the rectangle. A ray cast from there does not meet this
+  /// wall in ARGoS: Chipmunk's segment query only tests the sides the start lies in front of.
+  bool contains(Vec2 p) const {
+    const Vec2 d = p - center;
+    return std::abs(dot(d, axis)) < half_length && std::abs(dot(d, normal())) < half_thickness;
+  }
   /// segment_entry of each segment of the batch, exactly, in one pass that vectorises.
   void segment_entries(const SegmentBatch& segments, std::span<double, SegmentBatch::kSize> t) const;
 };

@@ -18,7 +18,9 @@
 // never grows, and one pass over the contacts costs a fraction of an iterative impulse
 // solver. The drive's angular joint is treated as infinitely stiff (its limit, 1530
 // rad/s^2, is reached within one sub-step at e-puck speeds) and friction torque is
-// ignored, which only matters for a robot spinning while it touches another.
+// ignored, which only matters for a robot spinning while it touches another. A robot placed
+// into a wall added after placement (placed_after_robots) keeps its overlap, as in ARGoS,
+// where contacts only stop the approach: see project_contacts.
 #include <span>
 #include <vector>
 

@@ -47,7 +47,7 @@ void place_robots(const ArenaModel& arena, const std::function<Vec2(Rng&)>& samp
       const double yaw = rng.uniform(0.0, kTwoPi);
       bool free = true;
       for (const Wall& wall : arena.walls)
-        if (wall.distance(p, nullptr) < r) { free = false; break; }
+        if (!wall.placed_after_robots && wall.distance(p, nullptr) < r) { free = false; break; }
       for (int j = 0; j < i && free; ++j)
         if ((swarm.position[j] - p).squared_length() < 4.0 * r * r) free = false;
       if (free) {

@@ -1,7 +1,8 @@
 #pragma once
 // Initial placement (CoreLoopFunctions::MoveRobots): robot after robot, a uniform position
 // in the start region and a uniform yaw, redrawn while it would overlap a wall or a robot
-// placed before it.
+// placed before it. Walls flagged placed_after_robots are not avoided: ARGoS loop functions
+// that add walls in Init after MoveRobots (the SCA shelter) leave robots overlapping them.
 #include <functional>
 
 #include "core/rng.hpp"

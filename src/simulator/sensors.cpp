@@ -145,6 +145,14 @@ void sense_proximity(const ArenaModel& arena, const RobotModel& model, SwarmStat
       }
       std::array<double, 8> t;
       wall.segment_entries(rays, t);
+      // A ray starting inside the wall does not see it (Chipmunk's segment query only tests
+      // the sides its start lies in front of): a robot that starts inside a wall added after
+      // placement senses only what lies beyond. Only for such walls: a robot touching any
+      // wall has its nearest ring origin 1 mm inside it, and ARGoS would not see that wall
+      // either, but the shipped calibration (AAC, foraging) stands on the reading it gives.
+      if (wall.placed_after_robots && wall.distance(p, nullptr) < kRing)
+        for (std::size_t k = 0; k < 8; ++k)
+          if (t[k] == 0.0 && wall.contains({rays.ax[k], rays.ay[k]})) t[k] = 2.0;
       for (std::size_t k = 0; k < 8; ++k) {
         const double hit = t[k] * epuck::kProximityRange;
         reading[k] = t[k] <= 1.0 && hit < reading[k] ? hit : reading[k];
@@ -171,7 +179,10 @@ void sense_light(const ArenaModel& arena, const RobotModel& model, SwarmState& s
       bool occluded = false;
       for (const std::uint16_t w : arena.walls_shading(l, p)) {
         const double t = arena.light_clearance_fraction(l, arena.walls[w].height);
-        if (arena.walls[w].segment_entry(p, p + to_light * t) <= 1.0) {
+        // A robot inside a wall (one added after placement) is not shaded by it: Chipmunk's
+        // segment query ignores a shape the ray starts in.
+        const double entry = arena.walls[w].segment_entry(p, p + to_light * t);
+        if (entry <= 1.0 && !(entry == 0.0 && arena.walls[w].contains(p))) {
           occluded = true;
           break;
         }

@@ -128,6 +128,21 @@ TEST(MissionFile, WallFieldsAreChecked) {
   expect_error(replace(kValid, "{\"regular_polygon\"", "{\"pyramid\": 1}, {\"regular_polygon\""), "arena.walls[0].pyramid: unknown field");
 }
 
+TEST(MissionFile, WallsMayBeAddedAfterThePlacement) {
+  // placed_after_robots: the walls of a box or polygon that placement does not avoid.
+  const Mission plain = parse_mission(kValid, "test");
+  for (const Wall& w : plain.arena.walls) EXPECT_FALSE(w.placed_after_robots);
+  const Mission late = parse_mission(replace(kValid, "\"sides\": 4", "\"sides\": 4, \"placed_after_robots\": true"), "test");
+  for (const Wall& w : late.arena.walls) EXPECT_TRUE(w.placed_after_robots);
+  const std::string box = R"({"box": {"center": [0, 0.1], "size": [0.2, 0.05], "placed_after_robots": true}}, )";
+  const Mission with_box = parse_mission(replace(kValid, "\"walls\": [", "\"walls\": [" + box), "test");
+  ASSERT_EQ(with_box.arena.walls.size(), 5u);
+  EXPECT_TRUE(with_box.arena.walls[0].placed_after_robots);
+  EXPECT_FALSE(with_box.arena.walls[1].placed_after_robots);
+  expect_error(replace(kValid, "\"sides\": 4", "\"sides\": 4, \"placed_after_robots\": 1"),
+               "arena.walls[0].regular_polygon.placed_after_robots: expected true or false");
+}
+
 TEST(MissionFile, OmittedSidesLeaveTheRestOfThePolygon) {
   const Mission m = parse_mission(replace(kValid, "\"sides\": 4", "\"sides\": 4, \"omit\": [1]"), "test");
   ASSERT_EQ(m.arena.walls.size(), 3u);
