@@ -13,26 +13,7 @@ namespace {
 
 constexpr double kMax = epuck::kMaxWheelSpeedCm;
 
-/// Vectors shorter than 0.1 become "straight ahead" (AutoMoDe's small-vector fallback).
-Vec2 with_fallback(Vec2 v) { return v.squared_length() < 0.01 ? Vec2{1.0, 0.0} : v; }
-
 constexpr std::int32_t kMaxWalkSteps = 100000;  // guards r -> 0 and mu -> 1 (infinite steps)
-
-Actuation exploration(double rwm, BehaviourMemory& m, const ReferenceModel& rm, Rng& rng) {
-  if (!m.turning) {
-    // The step that sees an obstacle still drives forward; the turn starts next step.
-    const Vec2 p = rm.proximity;
-    if (p.squared_length() >= 0.01 && p.x >= 0.0) {
-      m.turning = true;
-      m.turn_steps = static_cast<std::int32_t>(rng.uniform_int(0, static_cast<std::uint32_t>(rwm)));
-      m.turn_left = p.y < 0.0;  // obstacle on the right: turn left
-    }
-    return {kMax, kMax};
-  }
-  m.turn_steps -= 1;
-  if (m.turn_steps <= 0) m.turning = false;
-  return m.turn_left ? Actuation{-kMax, kMax} : Actuation{kMax, -kMax};
-}
 
 bool obstacle_in_front(const ReferenceModel& rm) { return rm.proximity.squared_length() >= 0.01 && rm.proximity.x >= 0.0; }
 
@@ -102,6 +83,23 @@ Actuation wheels_towards(Vec2 v) {
   return {kMax, kMax * c};
 }
 
+Actuation exploration(double rwm, double obstacle_squared_reading, BehaviourMemory& m, const ReferenceModel& rm, Rng& rng) {
+  if (!m.turning) {
+    // The step that sees an obstacle still drives forward; the turn starts next step.
+    const Vec2 p = rm.proximity;
+    if (p.squared_length() >= obstacle_squared_reading && p.x >= 0.0) {
+      m.turning = true;
+      m.turn_steps = static_cast<std::int32_t>(rng.uniform_int(0, static_cast<std::uint32_t>(rwm)));
+      m.turn_left = p.y < 0.0;  // obstacle on the right: turn left
+    }
+    return {epuck::kMaxWheelSpeedCm, epuck::kMaxWheelSpeedCm};
+  }
+  m.turn_steps -= 1;
+  if (m.turn_steps <= 0) m.turning = false;
+  constexpr double v = epuck::kMaxWheelSpeedCm;
+  return m.turn_left ? Actuation{-v, v} : Actuation{v, -v};
+}
+
 void reset_behaviour(BehaviourMemory& memory) { memory = BehaviourMemory{}; }
 
 void prepare_behaviour(const ModuleInstance& behaviour) {
@@ -113,7 +111,7 @@ Actuation run_behaviour(const ModuleInstance& b, BehaviourMemory& memory, const 
   switch (b.id) {
     // Chocolate (parameters: rwm | att | rep).
     case 10:
-      return exploration(prm[0], memory, rm, rng);
+      return exploration(prm[0], kChocolateObstacleSquaredReading, memory, rm, rng);
     case 11:
       return {0.0, 0.0};
     case 12:
@@ -131,7 +129,7 @@ Actuation run_behaviour(const ModuleInstance& b, BehaviourMemory& memory, const 
     }
     // TuttiFrutti: the Chocolate laws plus the LED colour cle (last parameter but clr).
     case 20:
-      return with_led(exploration(prm[0], memory, rm, rng), prm[1]);
+      return with_led(exploration(prm[0], kChocolateObstacleSquaredReading, memory, rm, rng), prm[1]);
     case 21:
       return with_led({0.0, 0.0}, prm[0]);
     case 24:

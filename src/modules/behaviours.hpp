@@ -28,6 +28,9 @@ struct Actuation {
   std::uint32_t led = kLedUnchanged;     // RGB of the RGB LEDs, 0 = off
 };
 
+/// Vectors shorter than 0.1 become "straight ahead" (AutoMoDe's small-vector fallback).
+inline Vec2 with_fallback(Vec2 v) { return v.squared_length() < 0.01 ? Vec2{1.0, 0.0} : v; }
+
 /// The colour vector of TuttiFrutti: sum over blobs of the colour at >= 6 cm of
 /// 1 / (distance + 1) towards the blob.
 Vec2 color_vector(const ReferenceModel& rm, std::uint32_t rgb);
@@ -35,6 +38,13 @@ Vec2 color_vector(const ReferenceModel& rm, std::uint32_t rgb);
 /// W(v) of RM1.2: outer wheel at 12 cm/s, inner at 12 cos(angle of v). The zero vector
 /// stops the robot (AutoMoDe would compute NaN speeds).
 Actuation wheels_towards(Vec2 v);
+
+/// Exploration's two-state law: straight on until an obstacle in front (a proximity vector
+/// with x >= 0 and squared length >= obstacle_squared_reading), then a turn in place away
+/// from it for U{0..rwm} steps. The step that sees the obstacle still drives forward.
+Actuation exploration(double rwm, double obstacle_squared_reading, BehaviourMemory& memory, const ReferenceModel& rm, Rng& rng);
+/// Master's threshold, a reading of 0.1 (written squared, as the law compares it).
+inline constexpr double kChocolateObstacleSquaredReading = 0.01;
 
 void reset_behaviour(BehaviourMemory& memory);
 /// Loads what a behaviour reads at every step (an Arlequin module's shipped network) before

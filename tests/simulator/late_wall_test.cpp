@@ -16,6 +16,7 @@
 #include "simulator/placement.hpp"
 #include "simulator/robot_model.hpp"
 #include "simulator/sensors.hpp"
+#include "swarm_builder.hpp"
 
 namespace sd {
 namespace {
@@ -51,14 +52,7 @@ ArenaModel shelter(bool after = true) {
   return arena;
 }
 
-SwarmState one_robot(Vec2 p, double yaw) {
-  SwarmState s;
-  s.resize(1);
-  s.position[0] = p;
-  s.yaw[0] = yaw;
-  s.heading[0] = Vec2::polar(1.0, yaw);
-  return s;
-}
+using test::one_robot;
 
 TEST(LateWalls, InsideDistanceIsToTheNearestSide) {
   const Wall back = shelter().walls[0];

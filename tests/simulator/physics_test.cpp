@@ -7,6 +7,7 @@
 #include "simulator/epuck.hpp"
 #include "simulator/physics.hpp"
 #include "simulator/sensors.hpp"
+#include "swarm_builder.hpp"
 
 namespace sd {
 namespace {
@@ -34,14 +35,7 @@ ArenaModel square_arena(double half) {
   return arena;
 }
 
-SwarmState one_robot(Vec2 p, double yaw) {
-  SwarmState s;
-  s.resize(1);
-  s.position[0] = p;
-  s.yaw[0] = yaw;
-  s.heading[0] = Vec2::polar(1.0, yaw);
-  return s;
-}
+using test::one_robot;
 
 TEST(Physics, StraightLineReachesFullSpeedAfterAccelerating) {
   const ArenaModel arena = open_arena();

@@ -1,6 +1,6 @@
 #pragma once
 // Builds a SwarmState with robots at given poses, its pair table refreshed, for
-// the sensor tests.
+// the sensor and physics tests.
 #include <initializer_list>
 #include <utility>
 
@@ -21,5 +21,7 @@ inline SwarmState robots(std::initializer_list<std::pair<Vec2, double>> poses, i
   update_pairs(s);
   return s;
 }
+
+inline SwarmState one_robot(Vec2 p, double yaw) { return robots({{p, yaw}}); }
 
 }  // namespace sd::test
