@@ -6,8 +6,11 @@
 // two simulators.
 //   1: up to November 2026 (glibc's sin, cos, exp and log; polar-method normals)
 //   2: core/math.hpp's elementary functions and ziggurat normals, the same on every CPU
+//   3: calibrated on SCA, Maple trees and TuttiFrutti (December 2026): walls a loop function
+//      adds after placement, Maple's own module laws, the TuttiFrutti scenarios' RAB range,
+//      the camera's square field and RM3.0's ground filter
 namespace sd {
 
-inline constexpr int kResultsVersion = 2;
+inline constexpr int kResultsVersion = 3;
 
 }  // namespace sd
