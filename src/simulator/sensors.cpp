@@ -179,10 +179,11 @@ void sense_light(const ArenaModel& arena, const RobotModel& model, SwarmState& s
       bool occluded = false;
       for (const std::uint16_t w : arena.walls_shading(l, p)) {
         const double t = arena.light_clearance_fraction(l, arena.walls[w].height);
-        // A robot inside a wall (one added after placement) is not shaded by it: Chipmunk's
-        // segment query ignores a shape the ray starts in.
-        const double entry = arena.walls[w].segment_entry(p, p + to_light * t);
-        if (entry <= 1.0 && !(entry == 0.0 && arena.walls[w].contains(p))) {
+        // A robot inside a wall added after placement is not shaded by it: Chipmunk's segment
+        // query ignores a shape the ray starts in (the same rule as the proximity rays').
+        const Wall& wall = arena.walls[w];
+        const double entry = wall.segment_entry(p, p + to_light * t);
+        if (entry <= 1.0 && !(entry == 0.0 && wall.placed_after_robots && wall.contains(p))) {
           occluded = true;
           break;
         }

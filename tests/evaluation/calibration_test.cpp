@@ -32,6 +32,7 @@
 #include "evaluation/evaluator.hpp"
 #include "experiments/statistics.hpp"
 #include "missions/catalogue.hpp"
+#include "simulator/epuck.hpp"
 
 namespace sd {
 namespace {
@@ -134,7 +135,7 @@ TEST_P(Calibration, ScoresLikeArgos) {
   Mission mission = load_mission(group.catalogue_mission);
   if (group.duration_s > 0) {
     mission.duration_s = group.duration_s;
-    mission.ticks = static_cast<int>(std::lround(group.duration_s * 10.0));
+    mission.ticks = static_cast<int>(std::lround(group.duration_s / epuck::kTickSeconds));  // as a mission file's
   }
   ThreadedEvaluator evaluator(0);
   std::vector<double> our_means, argos_means, ratios;
