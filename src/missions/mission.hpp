@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -27,6 +28,16 @@
 namespace sd {
 
 enum class Direction { Maximize, Minimize };
+
+/// The ARGoS3 loop functions that score the mission in the AutoMoDe tool chain (mission file
+/// field "argos"): the label their REGISTER_LOOP_FUNCTIONS gives, the library's path inside
+/// the experiments-loop-functions build folder, and attributes their <params> read beyond
+/// number_robots. Only the ARGoS export reads it; runs do not depend on it.
+struct ArgosLoopFunctions {
+  std::string label;
+  std::string library;
+  std::vector<std::pair<std::string, std::string>> params;  // attribute, value as written
+};
 std::string_view direction_name(Direction d);
 
 /// The objective types, each a reusable building block (objective_<idea>.hpp) whose
@@ -65,6 +76,7 @@ struct Mission {
   std::optional<ArrestRule> arrest;     // Coconut unbounded workspace
   std::vector<MissionEvent> events;     // TuttiFrutti LED colours
   ObjectiveSpec objective;
+  std::optional<ArgosLoopFunctions> argos_loop_functions;
 
   /// One start position, as placement draws it (before rejecting overlaps).
   Vec2 draw_start(Rng& rng) const;

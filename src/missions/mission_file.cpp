@@ -134,6 +134,31 @@ void read_robot_model(const Field& f, RobotModel& r) {
   if (f.has("camera_range")) r.camera_range = f.at("camera_range").positive();
 }
 
+/// {"loop_functions": {"label", "library", "params": {attribute: number, text or boolean}}}.
+void read_argos(const Field& f, Mission& m) {
+  f.only({"loop_functions"});
+  if (!f.has("loop_functions")) return;
+  const Field lf = f.at("loop_functions");
+  lf.only({"label", "library", "params"});
+  ArgosLoopFunctions loop;
+  loop.label = lf.at("label").text();
+  loop.library = lf.at("library").text();
+  if (loop.label.empty()) lf.at("label").fail("must not be empty");
+  if (loop.library.empty()) lf.at("library").fail("must not be empty");
+  if (lf.has("params")) {
+    const Field params = lf.at("params");
+    params.expect_object();
+    for (const auto& [key, value] : params.raw().items()) {
+      if (key == "number_robots") params.at(key).fail("is written from the mission's robots");
+      if (value.is_string()) loop.params.emplace_back(key, value.get<std::string>());
+      else if (value.is_boolean()) loop.params.emplace_back(key, value.get<bool>() ? "true" : "false");
+      else if (value.is_number()) loop.params.emplace_back(key, value.dump());
+      else params.at(key).fail("expected a number, a text or a boolean");
+    }
+  }
+  m.argos_loop_functions = std::move(loop);
+}
+
 /// The objective types a mission file may name, with their readers.
 struct ObjectiveType {
   const char* name;
@@ -239,10 +264,11 @@ void check_swarm_fits(const Field& root, const Mission& m) {
     root.at("robots").fail(std::to_string(m.robots) + " robots do not fit in the start region");
 }
 
-/// The digest of the document without the fields that only describe it; keys come out
+/// The digest of the document without the fields that only describe it (and "argos", which
+/// only the ARGoS export reads); keys come out
 /// sorted and without spaces, so layout and comments do not count either.
 std::string runs_digest(json document) {
-  for (const char* descriptive : {"title", "origin", "description"}) document.erase(descriptive);
+  for (const char* descriptive : {"title", "origin", "description", "argos"}) document.erase(descriptive);
   Fnv1a f;
   f.add(document.dump());
   return f.hex();
@@ -260,7 +286,7 @@ Mission parse_mission(const std::string& json_text, const std::string& source) {
     throw MissionError(std::string("not valid JSON: ") + e.what());
   }
   const Field root(document, "");
-  root.only({"name", "title", "origin", "description", "duration", "robots", "arena", "start", "robot", "arrest", "events", "objective"});
+  root.only({"name", "title", "origin", "description", "duration", "robots", "arena", "start", "robot", "arrest", "events", "objective", "argos"});
   Mission m;
   m.source = source;
   m.digest = runs_digest(document);
@@ -287,6 +313,7 @@ Mission parse_mission(const std::string& json_text, const std::string& source) {
   if (root.has("arrest")) m.arrest = read_arrest_rule(root.at("arrest"));
   if (root.has("events")) read_events(root.at("events"), m);
   m.objective = read_objective(root.at("objective"));
+  if (root.has("argos")) read_argos(root.at("argos"), m);
   resolve_event_names(root.at("objective"), m);
   check_patches_touch_arena(root, m);
   check_start_inside_walls(root, m);
