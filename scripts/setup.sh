@@ -9,6 +9,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev libsqlite3-dev libsodium-dev libboost-dev r-cran-irace
   libgtest-dev libgmock-dev libbenchmark-dev
   libcpp-httplib-dev  # the web app's server (run-exp)
+  libpugixml-dev  # ARGoS experiment files (mission export-argos)
   chromium  # the web app's browser tests (headless)
   jq  # bench/native_vs_irace.sh
   openmpi-bin libopenmpi-dev  # designs on MPI ranks (mpirun -np N swarmdesign ...)

@@ -1,0 +1,278 @@
+#include "export/argos_experiment.hpp"
+
+#include <pugixml.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include "control/config_string.hpp"
+#include "core/geometry.hpp"
+#include "core/rng.hpp"
+#include "simulator/epuck.hpp"
+
+namespace sd::argos {
+
+namespace {
+
+constexpr double kDegreesPerRadian = 180.0 / kPi;
+
+/// Metres and degrees to the nanometre / nano-degree, shortest text: 1.066 not 1.0660254...
+std::string number(double v) {
+  double rounded = std::round(v * 1e9) / 1e9;
+  if (rounded == 0.0) rounded = 0.0;  // no "-0"
+  return format_number(rounded);
+}
+std::string triple(double a, double b, double c) { return number(a) + "," + number(b) + "," + number(c); }
+
+std::string color_name(std::uint32_t rgb) {
+  struct Named {
+    std::uint32_t rgb;
+    const char* name;
+  };
+  static constexpr Named kNames[] = {{0x000000, "black"}, {0xffffff, "white"},   {0x7f7f7f, "gray50"},
+                                     {0xff0000, "red"},   {0x00ff00, "green"},   {0x0000ff, "blue"},
+                                     {0xffff00, "yellow"}, {0xff00ff, "magenta"}, {0x00ffff, "cyan"}};
+  for (const Named& n : kNames)
+    if (n.rgb == rgb) return n.name;
+  std::string text = std::to_string((rgb >> 16) & 0xff);
+  text += ",";
+  text += std::to_string((rgb >> 8) & 0xff);
+  text += ",";
+  text += std::to_string(rgb & 0xff);
+  text += ",255";
+  return text;
+}
+
+void comment(pugi::xml_node parent, const std::string& text) { parent.append_child(pugi::node_comment).set_value((" " + text + " ").c_str()); }
+
+pugi::xml_node child(pugi::xml_node parent, const char* name) { return parent.append_child(name); }
+
+void attr(pugi::xml_node node, const char* name, const std::string& value) { node.append_attribute(name).set_value(value.c_str()); }
+
+/// Walls the loop functions build themselves: TuttiFrutti's LED arena (build_arena) and the
+/// walls they add after placing the robots (SCA's shelter).
+std::set<std::size_t> walls_of_loop_functions(const Mission& m) {
+  std::set<std::size_t> walls;
+  if (!m.argos_loop_functions) return walls;
+  for (const LedArena::Block& b : m.led_arena.blocks) walls.insert(b.wall);
+  for (std::size_t i = 0; i < m.arena.walls.size(); ++i)
+    if (m.arena.walls[i].placed_after_robots) walls.insert(i);
+  return walls;
+}
+
+/// Half the side of a square arena around the origin that holds everything, plus a margin.
+double arena_half_side(const Mission& m) {
+  double half = 1.0;
+  const auto grow = [&half](Vec2 p) { half = std::max({half, std::abs(p.x), std::abs(p.y)}); };
+  for (const Wall& w : m.arena.walls) {
+    const double reach = w.half_length + w.half_thickness;
+    grow({std::abs(w.center.x) + reach, std::abs(w.center.y) + reach});
+  }
+  for (const Light& l : m.arena.lights) grow(l.position.xy());
+  const auto [lo, hi] = m.start.bounds();
+  grow(lo);
+  grow(hi);
+  return std::ceil(half + 0.5);
+}
+
+/// Start poses drawn from the mission's start region, off the walls and each other.
+std::vector<std::pair<Vec2, double>> start_poses(const Mission& m, std::uint64_t seed) {
+  Rng rng(seed);
+  constexpr double r = epuck::kBodyRadius;
+  std::vector<std::pair<Vec2, double>> poses;
+  for (int i = 0; i < m.robots; ++i) {
+    bool placed = false;
+    for (int trial = 0; trial < 100000 && !placed; ++trial) {
+      const Vec2 p = m.draw_start(rng);
+      placed = std::all_of(m.arena.walls.begin(), m.arena.walls.end(),
+                           [&](const Wall& w) { return w.distance(p, nullptr) > r + 0.005; }) &&
+               std::all_of(poses.begin(), poses.end(), [&](const auto& q) { return (q.first - p).length() > 2 * r + 0.01; });
+      if (placed) poses.emplace_back(p, rng.uniform(-180.0, 180.0));
+    }
+    if (!placed) throw std::runtime_error("cannot place e-puck " + std::to_string(i) + " in the mission's start region");
+  }
+  return poses;
+}
+
+void write_loop_functions(pugi::xml_node root, const Mission& m, const ExperimentOptions& options, Experiment& out) {
+  if (!m.argos_loop_functions) {
+    comment(root, "No loop functions: this mission file names none (its \"argos\" field). ARGoS needs loop functions "
+                  "to draw the floor, place the robots and print a score.");
+    out.notes.push_back("mission " + m.name + " names no ARGoS loop functions (mission-file field \"argos\"): the file "
+                        "has no floor and automode_main cannot score a run; add loop functions that compute the "
+                        "objective (experiments-loop-functions' CoreLoopFunctions) before using it");
+    return;
+  }
+  const ArgosLoopFunctions& lf = *m.argos_loop_functions;
+  comment(root, "Loop functions of experiments-loop-functions: they draw the floor, place the robots and compute the score.");
+  auto node = child(root, "loop_functions");
+  std::string library = options.loop_functions_dir;
+  if (!library.empty() && library.back() != '/') library += "/";
+  attr(node, "library", library + lf.library);
+  attr(node, "label", lf.label);
+  auto params = child(node, "params");
+  attr(params, "number_robots", std::to_string(m.robots));
+  for (const auto& [key, value] : lf.params) attr(params, key.c_str(), value);
+}
+
+void write_controller(pugi::xml_node root, const Mission& m, const ExperimentOptions& options) {
+  const RobotModel& r = m.robot;
+  auto controllers = child(root, "controllers");
+  comment(controllers, "ARGoS3-AutoMoDe's controller with the sensors, actuators and noise of the reference model; "
+                       "automode_main gives it the control software from its command line (its fsm-config or "
+                       "bt-config option, last).");
+  auto controller = child(controllers, "automode_controller");
+  attr(controller, "id", "automode");
+  attr(controller, "library", options.automode_library);
+  auto actuators = child(controller, "actuators");
+  auto wheels = child(actuators, "epuck_wheels");
+  attr(wheels, "implementation", "default");
+  attr(wheels, "noise_std_dev", number(r.wheel_noise));
+  auto leds = child(actuators, "epuck_rgb_leds");
+  attr(leds, "implementation", "default");
+  attr(leds, "medium", "leds");
+  auto rab_out = child(actuators, "epuck_range_and_bearing");
+  attr(rab_out, "implementation", "medium");
+  attr(rab_out, "medium", "rab");
+  attr(rab_out, "data_size", "4");
+  attr(rab_out, "range", number(r.rab_range));
+  auto sensors = child(controller, "sensors");
+  auto proximity = child(sensors, "epuck_proximity");
+  attr(proximity, "implementation", "default");
+  attr(proximity, "show_rays", "false");
+  attr(proximity, "noise_level", number(r.proximity_noise));
+  attr(proximity, "calibrated", "true");
+  auto rab_in = child(sensors, "epuck_range_and_bearing");
+  attr(rab_in, "implementation", "medium");
+  attr(rab_in, "medium", "rab");
+  attr(rab_in, "data_size", "4");
+  attr(rab_in, "loss_probability", number(r.rab_loss));
+  attr(rab_in, "calibrated", "true");
+  auto light = child(sensors, "epuck_light");
+  attr(light, "implementation", "default");
+  attr(light, "show_rays", "false");
+  attr(light, "noise_level", number(r.light_noise));
+  attr(light, "calibrated", "true");
+  auto ground = child(sensors, "epuck_ground");
+  attr(ground, "implementation", "rot_z_only");
+  attr(ground, "noise_level", number(r.ground_noise));
+  attr(ground, "calibrated", "true");
+  auto camera = child(sensors, "epuck_omnidirectional_camera");
+  attr(camera, "implementation", "rot_z_only");
+  attr(camera, "medium", "leds");
+  attr(camera, "show_rays", "false");
+  auto params = child(controller, "params");
+  attr(params, "readable", "false");
+  attr(params, "history", "false");
+}
+
+void write_arena(pugi::xml_node root, const Mission& m, const ExperimentOptions& options, Experiment& out) {
+  const double half = arena_half_side(m);
+  double top = 0.5;
+  for (const Light& l : m.arena.lights) top = std::max(top, l.position.z);
+  for (const Wall& w : m.arena.walls) top = std::max(top, w.height);
+  const double height = std::ceil(2.0 * (top + 0.25)) / 2.0;
+  auto arena = child(root, "arena");
+  attr(arena, "size", triple(2 * half, 2 * half, height));
+  attr(arena, "center", triple(0, 0, height / 2));
+
+  if (m.argos_loop_functions) {
+    auto floor = child(arena, "floor");
+    attr(floor, "id", "floor");
+    attr(floor, "source", "loop_functions");
+    attr(floor, "pixels_per_meter", "300");
+  }
+
+  std::vector<Light> lights = m.arena.lights;
+  if (lights.empty()) {
+    comment(arena, "ARGoS needs a light when the light sensor is configured: this one is off (intensity 0).");
+    lights.push_back({{0.0, 0.0, 0.4}, 0.0, 0x000000});
+  }
+  for (std::size_t i = 0; i < lights.size(); ++i) {
+    auto light = child(arena, "light");
+    attr(light, "id", "light" + std::to_string(i));
+    attr(light, "position", triple(lights[i].position.x, lights[i].position.y, lights[i].position.z));
+    attr(light, "orientation", "0,0,0");
+    attr(light, "color", color_name(lights[i].rgb));
+    attr(light, "intensity", number(lights[i].intensity));
+    attr(light, "medium", "leds");
+  }
+
+  const std::set<std::size_t> skipped = walls_of_loop_functions(m);
+  if (!skipped.empty())
+    comment(arena, std::to_string(skipped.size()) + " walls of the mission are built by the loop functions (the "
+                   "coloured LED walls, walls added after the robots are placed) and are not repeated here.");
+  for (std::size_t i = 0; i < m.arena.walls.size(); ++i) {
+    if (skipped.count(i)) continue;
+    const Wall& w = m.arena.walls[i];
+    // <box size="x,y,z">: local y along the wall's length, then turned by the yaw.
+    double yaw = std::atan2(w.axis.y, w.axis.x) * kDegreesPerRadian - 90.0;
+    if (yaw <= -180.0) yaw += 360.0;
+    auto box = child(arena, "box");
+    attr(box, "id", "wall" + std::to_string(out.boxes));
+    attr(box, "size", triple(2 * w.half_thickness, 2 * w.half_length, w.height));
+    attr(box, "movable", "false");
+    auto body = child(box, "body");
+    attr(body, "position", triple(w.center.x, w.center.y, 0));
+    attr(body, "orientation", triple(yaw, 0, 0));
+    ++out.boxes;
+  }
+  out.walls_left_to_loop_functions = static_cast<int>(skipped.size());
+  if (!m.led_arena.empty() && !m.argos_loop_functions)
+    out.notes.push_back("the mission's LED walls are written as plain boxes: ARGoS shows their colours only when "
+                        "loop functions build them with argos3-arena");
+
+  comment(arena, "Unique ids epuck0 ... : AutoMoDe's controller reads a robot's id from the digits after \"epuck\".");
+  const auto poses = start_poses(m, options.placement_seed);
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    auto epuck = child(arena, "e-puck");
+    attr(epuck, "id", "epuck" + std::to_string(i));
+    auto body = child(epuck, "body");
+    attr(body, "position", triple(poses[i].first.x, poses[i].first.y, 0));
+    attr(body, "orientation", triple(poses[i].second, 0, 0));
+    attr(child(epuck, "controller"), "config", "automode");
+  }
+}
+
+}  // namespace
+
+Experiment argos_experiment(const Mission& m, const ExperimentOptions& options) {
+  Experiment out;
+  pugi::xml_document doc;
+  auto declaration = doc.append_child(pugi::node_declaration);
+  attr(declaration, "version", "1.0");
+  // (XML comments cannot hold a double hyphen: the options are named without theirs.)
+  comment(doc, "Mission " + m.name + " (" + m.title + "), written by swarmdesign mission export-argos. Run it with "
+               "automode_main -n -c FILE.argos, then the seed option and the control software (fsm-config or "
+               "bt-config) last.");
+  auto root = child(doc, "argos-configuration");
+
+  auto framework = child(root, "framework");
+  auto experiment = child(framework, "experiment");
+  attr(experiment, "length", number(m.ticks * epuck::kTickSeconds));
+  attr(experiment, "ticks_per_second", number(1.0 / epuck::kTickSeconds));
+  attr(experiment, "random_seed", "0");
+
+  write_loop_functions(root, m, options, out);
+  write_controller(root, m, options);
+  write_arena(root, m, options, out);
+
+  auto dynamics = child(child(root, "physics_engines"), "dynamics2d");
+  attr(dynamics, "id", "dyn2d");
+  auto media = child(root, "media");
+  auto led_medium = child(media, "led");
+  attr(led_medium, "id", "leds");
+  attr(led_medium, "grid_size", "1,1,1");
+  attr(child(media, "range_and_bearing"), "id", "rab");
+  child(root, "visualization");
+
+  std::ostringstream text;
+  doc.save(text, "  ", pugi::format_default, pugi::encoding_utf8);
+  out.xml = text.str();
+  return out;
+}
+
+}  // namespace sd::argos
