@@ -22,6 +22,7 @@
 #include "cli/control_software_input.hpp"
 #include "cli/design_display.hpp"
 #include "cli/design_flags.hpp"
+#include "cli/export_display.hpp"
 #include "cli/score_output.hpp"
 #include "cli/slurm_flags.hpp"
 #include "storage/lease.hpp"
@@ -148,12 +149,14 @@ void run_design(const RunDesignOptions& o, int mpi_ranks) {
 struct TestDesignOptions {
   std::string seeds = "1-10";
   int threads = 0;
-  bool json = false;
+  bool json = false, argos = false;
   ControlSoftwareOptions software;
 };
 
 void test_design(const TestDesignOptions& o, const Context& context) {
   const std::vector<std::uint64_t> seeds = app::parse_seed_range(o.seeds);
+  if (o.argos && o.json)
+    throw UsageError("--argos prints a text line; leave out --json (or use: swarmdesign export --argos --json)");
   std::optional<ControlSoftware> given;
   if (context.has_control_software() || !o.software.config_file.empty()) given = read_control_software(context, o.software);
   app::Home home;
@@ -161,6 +164,7 @@ void test_design(const TestDesignOptions& o, const Context& context) {
   if (target.design_id && !o.json)
     std::cout << "Testing the best control software of design " << *target.design_id << ":\n  " << target.configuration
               << "\n";
+  if (o.argos) print_argos_line(target.software, "  ");
   score_and_print(target.mission, target.software, seeds, o.threads, o.json);
 }
 
@@ -194,12 +198,14 @@ CommandRegistrar registrar{40, [](CLI::App& app, Context& context) {
   tcmd->add_option("--seeds", test->seeds, "Seeds A-B to evaluate on (default 1-10)");
   tcmd->add_option("--threads", test->threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
   tcmd->add_flag("--json", test->json, "Print one JSON document");
+  tcmd->add_flag("--argos", test->argos, "Also print the control software as ARGoS3-AutoMoDe reads it (export --argos)");
   add_control_software_options(*tcmd, test->software);
   tcmd->footer(
       "Without control software, tests the best control software of the project's last finished design.\n"
       "The control software ends the command line.\n\n"
       "Example:\n  swarmdesign test-design --seeds 1-20\n"
-      "  swarmdesign test-design --seeds 1-20 --fsm-config --nstates 1 --s0 10 --rwm0 50");
+      "  swarmdesign test-design --seeds 1-20 --fsm-config --nstates 1 --s0 10 --rwm0 50\n"
+      "  swarmdesign test-design --argos");
   tcmd->callback([test, &context] { test_design(*test, context); });
 }};
 

@@ -7,15 +7,17 @@
 
 #include "app/accounts.hpp"
 #include "app/experiment_job.hpp"
+#include "app/export_argos.hpp"
 #include "app/project_design.hpp"
 #include "cli/command_registry.hpp"
+#include "cli/export_display.hpp"
 #include "control/config_string.hpp"
 
 namespace sd::cli {
 namespace {
 
 struct StatusOptions {
-  bool complete = false, json = false;
+  bool complete = false, json = false, argos = false;
 };
 
 void print_progress(const storage::Design& d, const storage::DesignProgress& p) {
@@ -81,6 +83,9 @@ void status(const StatusOptions& o) {
   if (o.json) {
     nlohmann::json document = app::status_document(status, o.complete);
     document["experiments"] = app::experiments_document(experiments);
+    if (o.argos && status.design && status.progress.best)
+      document["best_argos"] = app::argos_export_document(
+          app::try_export_control_software(parse_control_software(status.progress.best->command_line)));
     std::cout << document.dump(2) << "\n";
     return;
   }
@@ -104,6 +109,8 @@ void status(const StatusOptions& o) {
     if (!job->note.empty()) std::cout << "  " << job->note << "\n";
   }
   print_progress(d, status.progress);
+  if (o.argos && status.progress.best)
+    print_argos_line(parse_control_software(status.progress.best->command_line), "  best ");
   if (d.state == storage::DesignState::interrupted)
     std::cout << "It was interrupted; continue it with: swarmdesign run-design\n";
   if (d.state == storage::DesignState::finished) std::cout << "Test it with: swarmdesign test-design\n";
@@ -116,8 +123,9 @@ CommandRegistrar registrar{41, [](CLI::App& app, Context&) {
   cmd->add_flag("--complete", o->complete, "Add the whole race log: every iteration's configurations, instances, "
                                            "eliminations and elites");
   cmd->add_flag("--json", o->json, "Print one JSON document");
+  cmd->add_flag("--argos", o->argos, "Also print the best configuration as ARGoS3-AutoMoDe reads it (export --argos)");
   cmd->footer("Works from another terminal while the design runs.\n\n"
-              "Example:\n  swarmdesign status\n  swarmdesign status --complete --json");
+              "Example:\n  swarmdesign status\n  swarmdesign status --complete --json\n  swarmdesign status --argos");
   cmd->callback([o] { status(*o); });
 }};
 

@@ -1,0 +1,59 @@
+#include "app/export_argos.hpp"
+
+#include <fstream>
+
+#include "app/errors.hpp"
+#include "app/inputs.hpp"
+
+namespace sd::app {
+
+namespace {
+argos::TreeForm tree_form_named(const std::string& name) {
+  if (name.empty()) return argos::TreeForm::Automatic;
+  if (name == "rootnode") return argos::TreeForm::RootNode;
+  if (name == "nroot") return argos::TreeForm::NRoot;
+  throw InvalidRequest("--tree-form: unknown form '" + name + "' (rootnode or nroot)");
+}
+}  // namespace
+
+argos::LegacyString export_control_software(const ControlSoftware& software, const std::string& flavour,
+                                            const std::string& tree_form) {
+  try {
+    argos::ExportOptions options;
+    if (!flavour.empty()) options.flavour = argos::export_flavour(flavour);
+    options.tree_form = tree_form_named(tree_form);
+    return argos::to_legacy_string(software, options);
+  } catch (const argos::ExportRefused& e) {
+    throw InvalidRequest(std::string("cannot export for ARGoS: ") + e.what());
+  }
+}
+
+ArgosExportLine try_export_control_software(const ControlSoftware& software) {
+  ArgosExportLine line;
+  try {
+    line.result = argos::to_legacy_string(software);
+    line.exported = true;
+  } catch (const argos::ExportRefused& e) {
+    line.refusal = e.what();
+  }
+  return line;
+}
+
+nlohmann::json argos_export_document(const ArgosExportLine& line) {
+  if (!line.exported) return {{"refused", line.refusal}};
+  return {{"config", line.result.text}, {"flavour", flavour_name(line.result.flavour)}, {"reader", line.result.reader}};
+}
+
+argos::Experiment export_mission(const MissionExportRequest& request) {
+  if (request.out.empty()) throw InvalidRequest("--out: give the .argos file to write");
+  const Mission mission = load_requested_mission(request.mission);
+  argos::Experiment experiment = argos::argos_experiment(mission, request.options);
+  std::ofstream out(request.out, std::ios::binary | std::ios::trunc);
+  if (!out) throw std::runtime_error("cannot write " + request.out.string());
+  out << experiment.xml;
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + request.out.string());
+  return experiment;
+}
+
+}  // namespace sd::app

@@ -1,0 +1,39 @@
+#pragma once
+// Giving SwarmDesign's work back to the AutoMoDe tool chain (export --argos, mission
+// export-argos, and the --argos of status and test-design): the jobs over src/export, with
+// their refusals as InvalidRequest (the request asks for what the target code base cannot read).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "control/control_software.hpp"
+#include "export/argos_experiment.hpp"
+#include "export/legacy_string.hpp"
+
+namespace sd::app {
+
+/// `flavour` empty: the one flavour of every module; `tree_form` "", "rootnode" or "nroot".
+argos::LegacyString export_control_software(const ControlSoftware& software, const std::string& flavour = "",
+                                            const std::string& tree_form = "");
+
+/// For a report line: the export in the inferred flavour, or why there is none.
+struct ArgosExportLine {
+  bool exported = false;
+  argos::LegacyString result;
+  std::string refusal;
+};
+ArgosExportLine try_export_control_software(const ControlSoftware& software);
+/// {"config", "flavour", "reader"} or {"refused": why}.
+nlohmann::json argos_export_document(const ArgosExportLine& line);
+
+struct MissionExportRequest {
+  std::string mission;             // catalogue name or mission file
+  std::filesystem::path out;       // the .argos file to write
+  argos::ExperimentOptions options;
+};
+/// Writes the file; returns what was written (its notes are for the user).
+argos::Experiment export_mission(const MissionExportRequest& request);
+
+}  // namespace sd::app

@@ -1,0 +1,13 @@
+#pragma once
+// The ARGoS3-AutoMoDe form of control software as a report line (status --argos,
+// test-design --argos); export_commands.cpp has the export commands themselves.
+#include <string>
+
+#include "control/control_software.hpp"
+
+namespace sd::cli {
+
+/// "<indent>for ARGoS3-AutoMoDe: <string>" and the program that reads it, or why there is none.
+void print_argos_line(const ControlSoftware& software, const std::string& indent);
+
+}  // namespace sd::cli
