@@ -1,0 +1,69 @@
+// The export commands end to end, as a user runs them.
+#include <gtest/gtest.h>
+#include <pugixml.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace {
+
+struct Result {
+  int status;
+  std::string out, err;
+};
+
+Result run(const std::string& args) {
+  const auto err_file = std::filesystem::temp_directory_path() / ("sd_export_err_" + std::to_string(::getpid()));
+  const std::string command = std::string(SWARMDESIGN_BINARY) + " " + args + " 2>" + err_file.string();
+  FILE* pipe = ::popen(command.c_str(), "r");
+  Result r;
+  char buffer[4096];
+  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) r.out.append(buffer, n);
+  const int status = ::pclose(pipe);
+  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream err(err_file);
+  std::stringstream ss;
+  ss << err.rdbuf();
+  r.err = ss.str();
+  std::filesystem::remove(err_file);
+  return r;
+}
+
+TEST(export_Cli, ExportArgosPrintsTheOneDigitString) {
+  const Result r = run("export --argos --fsm-config --nstates 1 --s0 24 --att0 2 --cle0 4");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, "--fsm-config --nstates 1 --s0 4 --att0 2 --cle0 4\n");
+  EXPECT_NE(r.err.find("tuttifrutti"), std::string::npos) << r.err;
+}
+
+TEST(export_Cli, AMixedDesignIsRefusedNamingItsModules) {
+  const Result r = run("export --argos --fsm-config --nstates 2 --s0 10 --rwm0 5 --n0 1 --n0x0 0 --c0x0 15 --p0x0 1 "
+                       "--s1 42");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("swarmdesign: error: cannot export for ARGoS"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("state 1: 42 Phototaxis (maple)"), std::string::npos) << r.err;
+  const Result flavour = run("export --argos --flavour coconut --fsm-config --nstates 1 --s0 10 --rwm0 5");
+  EXPECT_EQ(flavour.status, 2);
+  EXPECT_NE(flavour.err.find("state 0: 10 Exploration (chocolate)"), std::string::npos) << flavour.err;
+}
+
+TEST(export_Cli, MissionExportArgosWritesAFileArgosCanParse) {
+  const auto file = std::filesystem::temp_directory_path() / ("sd_export_" + std::to_string(::getpid()) + ".argos");
+  const Result r = run("mission export-argos aac --out " + file.string() + " --loop-functions-dir /x/build");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("Wrote "), std::string::npos);
+  pugi::xml_document doc;
+  ASSERT_TRUE(doc.load_file(file.c_str()));
+  EXPECT_EQ(std::string(doc.child("argos-configuration").child("loop_functions").attribute("library").value()),
+            "/x/build/loop-functions/chocolate/AAC/libchocolate_aac_loopfunc.so");
+  std::filesystem::remove(file);
+  const Result help = run("mission export-argos --help");
+  EXPECT_NE(help.out.find("Example:"), std::string::npos);
+}
+
+}  // namespace
