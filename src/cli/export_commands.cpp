@@ -12,14 +12,15 @@
 
 namespace sd::cli {
 
-void print_argos_line(const ControlSoftware& software, const std::string& indent) {
+void print_argos_line(const ControlSoftware& software, const std::string& indent, const std::string& what) {
   const app::ArgosExportLine line = app::try_export_control_software(software);
+  const std::string head = indent + (what.empty() ? "" : what + " ") + "for ARGoS3-AutoMoDe";
   if (!line.exported) {
-    std::cout << indent << "for ARGoS3-AutoMoDe: none (" << line.refusal << ")\n";
+    std::cout << head << ": none (" << line.refusal << ")\n";
     return;
   }
-  std::cout << indent << "for ARGoS3-AutoMoDe (" << flavour_name(line.result.flavour) << ", " << line.result.reader
-            << "):\n"
+  std::cout << head << " (" << flavour_name(line.result.flavour) << ", "
+            << line.result.reader << "):\n"
             << indent << "  " << line.result.text << "\n";
 }
 

@@ -7,7 +7,8 @@
 
 namespace sd::cli {
 
-/// "<indent>for ARGoS3-AutoMoDe: <string>" and the program that reads it, or why there is none.
-void print_argos_line(const ControlSoftware& software, const std::string& indent);
+/// "<indent><what> for ARGoS3-AutoMoDe (flavour, program):" (what may be empty), then the string
+/// on the next line, indented two more; or why there is none.
+void print_argos_line(const ControlSoftware& software, const std::string& indent, const std::string& what);
 
 }  // namespace sd::cli

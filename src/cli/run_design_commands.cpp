@@ -164,7 +164,7 @@ void test_design(const TestDesignOptions& o, const Context& context) {
   if (target.design_id && !o.json)
     std::cout << "Testing the best control software of design " << *target.design_id << ":\n  " << target.configuration
               << "\n";
-  if (o.argos) print_argos_line(target.software, "  ");
+  if (o.argos) print_argos_line(target.software, "  ", "");
   score_and_print(target.mission, target.software, seeds, o.threads, o.json);
 }
 

@@ -110,7 +110,7 @@ void status(const StatusOptions& o) {
   }
   print_progress(d, status.progress);
   if (o.argos && status.progress.best)
-    print_argos_line(parse_control_software(status.progress.best->command_line), "  best ");
+    print_argos_line(parse_control_software(status.progress.best->command_line), "  ", "best so far");
   if (d.state == storage::DesignState::interrupted)
     std::cout << "It was interrupted; continue it with: swarmdesign run-design\n";
   if (d.state == storage::DesignState::finished) std::cout << "Test it with: swarmdesign test-design\n";
