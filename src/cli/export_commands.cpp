@@ -95,6 +95,7 @@ const CommandRegistrar registrar{12, [](CLI::App& app, Context& context) {
 
   auto m = std::make_shared<MissionExportOptions>();
   auto* mission = app.get_subcommand("mission");
+  mission->description("Describe one mission, or write it as an ARGoS experiment file");
   auto* argos = mission->add_subcommand("export-argos", "Write a mission as an ARGoS experiment file for automode_main");
   argos->add_option("mission", m->mission, "Mission name or mission file")->required();
   argos->add_option("--out", m->out, "The .argos file to write")->required();

@@ -66,4 +66,26 @@ TEST(export_Cli, MissionExportArgosWritesAFileArgosCanParse) {
   EXPECT_NE(help.out.find("Example:"), std::string::npos);
 }
 
+TEST(export_Cli, EveryExportCommandHasHelpWithAnExample) {
+  for (const char* command : {"export", "mission export-argos", "status", "test-design"}) {
+    const Result r = run(std::string(command) + " --help");
+    EXPECT_EQ(r.status, 0) << command;
+    EXPECT_NE(r.out.find("Example:\n  swarmdesign "), std::string::npos) << command << ":\n" << r.out;
+  }
+  for (const char* command : {"status", "test-design"})
+    EXPECT_NE(run(std::string(command) + " --help").out.find("--argos"), std::string::npos) << command;
+}
+
+TEST(export_Cli, TestDesignArgosIsTextOnly) {
+  const Result r = run("test-design --argos --json --fsm-config --nstates 1 --s0 11");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--argos prints a text line"), std::string::npos) << r.err;
+}
+
+TEST(export_Cli, ExportNeedsItsTarget) {
+  const Result r = run("export --fsm-config --nstates 1 --s0 11");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--argos"), std::string::npos) << r.err;
+}
+
 }  // namespace
