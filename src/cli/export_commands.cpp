@@ -108,7 +108,8 @@ const CommandRegistrar registrar{12, [](CLI::App& app, Context& context) {
       "The e-pucks are epuck0 ... (unique ids for AutoMoDe's messages); the loop functions named by the\n"
       "mission file's \"argos\" field draw the floor and score each run.\n\n"
       "Example:\n  swarmdesign mission export-argos aac --out aac.argos \\\n"
-      "      --loop-functions-dir ~/experiments-loop-functions/build --automode-library ~/ARGoS3-AutoMoDe/build/src/libautomode.so");
+      "      --loop-functions-dir ~/experiments-loop-functions/build \\\n"
+      "      --automode-library ~/ARGoS3-AutoMoDe/build/src/libautomode.so");
   argos->callback([m] { export_mission(*m); });
 }};
 

@@ -46,11 +46,18 @@ std::string color_name(std::uint32_t rgb) {
   return text;
 }
 
-void comment(pugi::xml_node parent, const std::string& text) { parent.append_child(pugi::node_comment).set_value((" " + text + " ").c_str()); }
+void comment(pugi::xml_node parent, const std::string& text) {
+  std::string padded = " ";
+  padded += text;
+  padded += " ";
+  parent.append_child(pugi::node_comment).set_value(padded.c_str());
+}
 
 pugi::xml_node child(pugi::xml_node parent, const char* name) { return parent.append_child(name); }
 
-void attr(pugi::xml_node node, const char* name, const std::string& value) { node.append_attribute(name).set_value(value.c_str()); }
+void attr(pugi::xml_node node, const char* name, const std::string& value) {
+  node.append_attribute(name).set_value(value.c_str());
+}
 
 /// Walls the loop functions build themselves: TuttiFrutti's LED arena (build_arena) and the
 /// walls they add after placing the robots (SCA's shelter).

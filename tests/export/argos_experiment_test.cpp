@@ -135,8 +135,9 @@ TEST(export_ArgosExperiment, EveryCatalogueMissionIsAnArgosFileWithItsRobotsTime
     // The controller: the robot model's noise and RAB range.
     const auto controller = p.root.child("controllers").child("automode_controller");
     ASSERT_TRUE(controller);
-    EXPECT_DOUBLE_EQ(controller.child("actuators").child("epuck_wheels").attribute("noise_std_dev").as_double(), m.robot.wheel_noise);
-    EXPECT_DOUBLE_EQ(controller.child("actuators").child("epuck_range_and_bearing").attribute("range").as_double(), m.robot.rab_range);
+    const auto actuators = controller.child("actuators");
+    EXPECT_DOUBLE_EQ(actuators.child("epuck_wheels").attribute("noise_std_dev").as_double(), m.robot.wheel_noise);
+    EXPECT_DOUBLE_EQ(actuators.child("epuck_range_and_bearing").attribute("range").as_double(), m.robot.rab_range);
     const auto sensors = controller.child("sensors");
     EXPECT_DOUBLE_EQ(sensors.child("epuck_proximity").attribute("noise_level").as_double(), m.robot.proximity_noise);
     EXPECT_DOUBLE_EQ(sensors.child("epuck_light").attribute("noise_level").as_double(), m.robot.light_noise);
@@ -222,7 +223,8 @@ TEST(export_ArgosExperiment, TheArgosFieldIsCheckedAndLeftOutOfTheDigest) {
   EXPECT_EQ(params.attribute("dist_radius").as_double(), 1.2);
 
   std::string bad = plain;
-  bad.insert(plain.rfind('}'), R"(, "argos": {"loop_functions": {"label": "x", "library": "y", "params": {"number_robots": 3}}})");
+  bad.insert(plain.rfind('}'),
+             R"(, "argos": {"loop_functions": {"label": "x", "library": "y", "params": {"number_robots": 3}}})");
   try {
     parse_mission(bad, "bad");
     FAIL();

@@ -155,7 +155,9 @@ INSTANTIATE_TEST_SUITE_P(Flavours, export_EveryFlavour,
                                            FlavourCase{Flavour::Maple, true, true},
                                            FlavourCase{Flavour::Coconut, true, false},
                                            FlavourCase{Flavour::Arlequin, true, false}),
-                         [](const ::testing::TestParamInfo<FlavourCase>& test) { return std::string(flavour_name(test.param.flavour)); });
+                         [](const ::testing::TestParamInfo<FlavourCase>& test) {
+                           return std::string(flavour_name(test.param.flavour));
+                         });
 
 TEST(export_LegacyString, TuttiFruttiTreesAreRefusedForItsCodeBaseHasNone) {
   const auto trees = sampled(Flavour::TuttiFrutti, false, true, 1, 7);
