@@ -17,7 +17,7 @@ struct UsedModule {
   ModuleKind kind;
   const ModuleInstance* module;
   std::string suffix;  // "1", "1x0", "00"
-  int n_token = -1;    // value of --n<suffix> in the string (FSM transitions, tree conditions)
+  int n_token = -1;    // FSM transitions: the value of --n<suffix> in the string (the destination)
 };
 
 void tree_modules(const BehaviourTree& tree, int index, const std::string& id, std::vector<UsedModule>& out) {
@@ -25,7 +25,7 @@ void tree_modules(const BehaviourTree& tree, int index, const std::string& id, s
   if (node.type == BtNodeType::Action) {
     out.push_back({"action node " + id, ModuleKind::Behaviour, &node.module, id, -1});
   } else if (node.type == BtNodeType::Condition) {
-    out.push_back({"condition node " + id, ModuleKind::Condition, &node.module, id, static_cast<int>(BtNodeType::Condition)});
+    out.push_back({"condition node " + id, ModuleKind::Condition, &node.module, id, -1});
   } else {
     for (std::size_t c = 0; c < node.children.size(); ++c)
       tree_modules(tree, node.children[c], id + std::to_string(c), out);
@@ -99,7 +99,9 @@ Flavour resolve_flavour(const std::vector<UsedModule>& modules, const ExportOpti
                       "modules only: " + joined(all));
 }
 
-/// Demiurge reads a neighbour-count condition's xi from --n<suffix>, not from --p<suffix>.
+/// Demiurge's neighbour-count conditions read xi from the parameter "n", not "p": in an FSM
+/// that is --n<i>x<j>, the transition's destination token; a tree's condition is handed only
+/// the tokens from --c<id> on, so it finds no "n" and throws "Missing Parameter".
 void check_demiurge_neighbour_counts(const std::vector<UsedModule>& modules, Flavour flavour) {
   std::vector<std::string> refused;
   for (const UsedModule& m : modules) {
@@ -108,20 +110,24 @@ void check_demiurge_neighbour_counts(const std::vector<UsedModule>& modules, Fla
     const int p = spec ? spec->parameter_index("p") : -1;
     if (p < 0) continue;
     const double xi = m.module->parameters[static_cast<std::size_t>(p)];
-    if (xi == m.n_token) continue;
+    if (m.n_token >= 0 && xi == m.n_token) continue;
     std::string why = module_text(m);
-    why += " has xi = ";
-    why += format_number(xi);
-    why += " but Demiurge would read xi = ";
-    why += std::to_string(m.n_token);
-    why += " from --n";
-    why += m.suffix;
+    if (m.n_token < 0) {
+      why += ": Demiurge's tree builder gives a condition no xi (Missing Parameter)";
+    } else {
+      why += " has xi = ";
+      why += format_number(xi);
+      why += " but Demiurge would read xi = ";
+      why += std::to_string(m.n_token);
+      why += " from --n";
+      why += m.suffix;
+    }
     refused.push_back(why);
   }
   if (!refused.empty())
     throw ExportRefused(std::string(flavour_name(flavour)) +
                         " exists only in the Demiurge code base, whose neighbour-count conditions read their "
-                        "threshold xi from the --n token that also names the destination (or the node type, 6): " +
+                        "threshold xi from --n<i>x<j>, the token that names an FSM transition's destination: " +
                         joined(refused));
 }
 

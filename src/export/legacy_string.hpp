@@ -16,7 +16,8 @@
 // Every code base reads the neighbour-count threshold xi from --p<i>x<j> and eta from
 // --w<i>x<j>, as SwarmDesign does, except Demiurge, which reads xi from --n<i>x<j> (the
 // token that also names the destination): there a neighbour-count condition exports only
-// when its xi equals that token's value.
+// from an FSM and when its xi equals that token's value (Demiurge's tree builder gives
+// conditions no xi at all).
 #include <optional>
 #include <stdexcept>
 #include <string>

@@ -224,6 +224,17 @@ TEST(export_LegacyString, DemiurgeNeighbourCountsExportOnlyWhenItReadsTheirXi) {
   const auto result = to_legacy_string(exported);
   EXPECT_EQ(result.text, to_config_string(exported));
   EXPECT_NE(result.reader.find("Demiurge"), std::string::npos);
+  // Demiurge's tree builder hands a condition only the tokens from --c<id> on: no xi at all.
+  const ControlSoftware tree = parse_control_software(
+      "--bt-config --nroot 3 --nchildroot 1 --n0 0 --nchild0 2 --n00 6 --c00 53 --p00 6 --w00 1 --n01 5 --a01 51 --p01 0");
+  try {
+    to_legacy_string(tree);
+    FAIL();
+  } catch (const ExportRefused& e) {
+    EXPECT_NE(std::string(e.what()).find("condition node 00: 53 NeighborsCount (arlequin): Demiurge's tree builder"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(export_LegacyString, EvoStickNetworksAreNotModularControlSoftware) {
