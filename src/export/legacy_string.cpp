@@ -86,8 +86,8 @@ Flavour resolve_flavour(const std::vector<UsedModule>& modules, const ExportOpti
     for (const UsedModule& m : modules)
       if (module_flavour(m) != *options.flavour) foreign.push_back(module_text(m));
     if (!foreign.empty())
-      throw ExportRefused("ARGoS3-AutoMoDe's " + std::string(flavour_name(*options.flavour)) +
-                          " code base has only its own modules, and these are not: " + joined(foreign));
+      throw ExportRefused("the " + std::string(flavour_name(*options.flavour)) +
+                          " code base reads only its own flavour's modules, and these are not: " + joined(foreign));
     return *options.flavour;
   }
   std::set<Flavour> flavours;
@@ -214,7 +214,7 @@ LegacyString export_string(const ControlSoftware& software, Flavour flavour, con
     case Flavour::TuttiFrutti:
       if (tree)
         throw ExportRefused("ARGoS3-AutoMoDe's tuttifrutti code base runs finite-state machines only; this is a "
-                            "behaviour tree (only Demiurge reads TuttiFrutti trees, with two-digit ids: see show-config)");
+                            "behaviour tree (only Demiurge reads TuttiFrutti trees: in SwarmDesign's own two-digit string)");
       return {one_digit(software, offset), flavour, kTutti};
     case Flavour::Maple:
       if (!tree) return {one_digit(software, offset), flavour, kBehaviorTreeBranchFsm};
