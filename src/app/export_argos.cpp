@@ -46,6 +46,9 @@ nlohmann::json argos_export_document(const ArgosExportLine& line) {
 
 argos::Experiment export_mission(const MissionExportRequest& request) {
   if (request.out.empty()) throw InvalidRequest("--out: give the .argos file to write");
+  const std::string& tag = request.options.controller_tag;
+  if (tag != "automode_controller" && tag != "automode_controller_bt")
+    throw InvalidRequest("--controller: automode_controller or automode_controller_bt, not '" + tag + "'");
   const Mission mission = load_requested_mission(request.mission);
   argos::Experiment experiment = argos::argos_experiment(mission, request.options);
   std::ofstream out(request.out, std::ios::binary | std::ios::trunc);

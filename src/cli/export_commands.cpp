@@ -103,6 +103,8 @@ const CommandRegistrar registrar{12, [](CLI::App& app, Context& context) {
                     "experiments-loop-functions' build folder, put before the mission's loop-function library");
   argos->add_option("--automode-library", m->experiment.automode_library,
                     "ARGoS3-AutoMoDe's libautomode.so, for the controller");
+  argos->add_option("--controller", m->experiment.controller_tag,
+                    "automode_controller (default; automode_main) or automode_controller_bt (automode_main_bt's trees)");
   argos->add_flag("--json", m->json, "Print one JSON document");
   argos->footer(
       "The e-pucks are epuck0 ... (unique ids for AutoMoDe's messages); the loop functions named by the\n"

@@ -131,7 +131,7 @@ void write_controller(pugi::xml_node root, const Mission& m, const ExperimentOpt
   comment(controllers, "ARGoS3-AutoMoDe's controller with the sensors, actuators and noise of the reference model; "
                        "automode_main gives it the control software from its command line (its fsm-config or "
                        "bt-config option, last).");
-  auto controller = child(controllers, "automode_controller");
+  auto controller = child(controllers, options.controller_tag.c_str());
   attr(controller, "id", "automode");
   attr(controller, "library", options.automode_library);
   auto actuators = child(controller, "actuators");

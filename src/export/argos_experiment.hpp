@@ -20,6 +20,8 @@ struct ExperimentOptions {
   std::string loop_functions_dir = "experiments-loop-functions/build";
   /// The automode controller's library (ARGoS3-AutoMoDe's build).
   std::string automode_library = "ARGoS3-AutoMoDe/build/src/libautomode.so";
+  /// Its XML tag: automode_controller, or automode_controller_bt for automode_main_bt's trees.
+  std::string controller_tag = "automode_controller";
   /// Seeds the e-pucks' start poses written in the file (loop functions re-place them).
   std::uint64_t placement_seed = 1;
 };

@@ -61,6 +61,11 @@ TEST(export_Cli, MissionExportArgosWritesAFileArgosCanParse) {
   ASSERT_TRUE(doc.load_file(file.c_str()));
   EXPECT_EQ(std::string(doc.child("argos-configuration").child("loop_functions").attribute("library").value()),
             "/x/build/loop-functions/chocolate/AAC/libchocolate_aac_loopfunc.so");
+  const Result bt = run("mission export-argos foraging --controller automode_controller_bt --out " + file.string());
+  EXPECT_EQ(bt.status, 0) << bt.err;
+  ASSERT_TRUE(doc.load_file(file.c_str()));
+  EXPECT_TRUE(doc.child("argos-configuration").child("controllers").child("automode_controller_bt"));
+  EXPECT_EQ(run("mission export-argos foraging --controller epuck_nn --out " + file.string()).status, 2);
   std::filesystem::remove(file);
   const Result help = run("mission export-argos --help");
   EXPECT_NE(help.out.find("Example:"), std::string::npos);
