@@ -20,7 +20,7 @@ for ((r = 1; r <= reps; ++r)); do
     bin=$old; [[ $side == new ]] && bin=$new
     echo "run $r/$reps: $side" >&2
     "$bin" --benchmark_filter="$filter" --benchmark_format=csv --benchmark_min_time=1.5 2>/dev/null |
-      awk -F, -v side="$side" '/^"BM_/ { gsub(/"/, "", $1); sub(/\/.*/, "", $1); print side, $1, $4 }' >> "$rows"
+      awk -F, -v side="$side" '/^"BM_/ { gsub(/"/, "", $1); sub(/\/(min_time|iterations):.*/, "", $1); print side, $1, $4 }' >> "$rows"
   done
 done
 awk '{ key = $2; t = $3 + 0; n[$1, key]++; sum[$1, key] += t

@@ -2,15 +2,19 @@
 // Reports ms per evaluation and robot-ticks per second.
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <fstream>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "control/config_string.hpp"
 #include "evaluation/simulation.hpp"
 #include "missions/catalogue.hpp"
+#include "missions/mission.hpp"
 
 namespace {
 
@@ -22,15 +26,23 @@ const char* kExplorePhototaxis =
     "--fsm-config --nstates 2 --s0 10 --rwm0 50 --n0 1 --n0x0 0 --c0x0 10 --p0x0 1 "
     "--s1 12 --n1 1 --n1x0 0 --c1x0 12 --p1x0 1";
 
+/// Robot-ticks per second, and nanoseconds per robot and tick (flat if the cost grows
+/// linearly with the swarm). Every benchmark reports both: the CSV output needs the same
+/// counters in every row.
+void report_rates(benchmark::State& state, const sd::Mission& mission) {
+  const double robot_ticks = static_cast<double>(mission.robots) * mission.ticks * static_cast<double>(state.iterations());
+  state.counters["robot_ticks_per_s"] = benchmark::Counter(robot_ticks, benchmark::Counter::kIsRate);
+  state.counters["ns_per_robot_tick"] =
+      benchmark::Counter(robot_ticks / 1e9, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
 void run_aac(benchmark::State& state, const char* config) {
   const sd::Mission mission = sd::load_mission("aac");
   const sd::ControlSoftware software = sd::parse_control_software(std::string(config));
   sd::Simulation simulation(mission, software);
   std::uint64_t seed = 1;
   for (auto _ : state) benchmark::DoNotOptimize(simulation.run(seed++));
-  const double robot_ticks = static_cast<double>(mission.robots) * mission.ticks;
-  state.counters["robot_ticks_per_s"] =
-      benchmark::Counter(robot_ticks * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  report_rates(state, mission);
 }
 
 // The camera's cost: robots show yellow and follow yellow (TuttiFrutti GoToColor), on the
@@ -79,16 +91,59 @@ void BM_AacDesignSample(benchmark::State& state) {
     benchmark::DoNotOptimize(run.simulation->run(run.seed));
     next = (next + 1) % runs.size();
   }
-  const double robot_ticks = static_cast<double>(mission.robots) * mission.ticks;
-  state.counters["robot_ticks_per_s"] =
-      benchmark::Counter(robot_ticks * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  report_rates(state, mission);
 }
+
+
+// How the cost grows with the swarm: AAC with N robots in the arena scaled by sqrt(N / 20),
+// so that the density (robots per square metre of arena, of spot, of start disc) stays
+// AAC's. Every length of the mission file scales: walls, spots, start disc, the light's
+// horizontal position (its height and the walls' height and thickness stay).
+sd::Mission scaled_aac(int robots) {
+  std::ifstream in(SWARMDESIGN_MISSIONS "/aac.json");
+  if (!in) throw std::runtime_error("cannot read " SWARMDESIGN_MISSIONS "/aac.json");
+  std::stringstream text;
+  text << in.rdbuf();
+  nlohmann::json m = nlohmann::json::parse(text.str(), nullptr, true, /*ignore_comments=*/true);
+  const double s = std::sqrt(robots / 20.0);
+  auto scale_circle = [s](nlohmann::json& c) {
+    c["center"][0] = c["center"][0].get<double>() * s;
+    c["center"][1] = c["center"][1].get<double>() * s;
+    c["radius"] = c["radius"].get<double>() * s;
+  };
+  m["robots"] = robots;
+  auto& polygon = m["arena"]["walls"][0]["regular_polygon"];
+  polygon["apothem"] = polygon["apothem"].get<double>() * s;
+  polygon["length"] = polygon["length"].get<double>() * s;
+  for (auto& patch : m["arena"]["floor"]["patches"]) scale_circle(patch["region"]["circle"]);
+  for (auto& light : m["arena"]["lights"]) {
+    light["position"][0] = light["position"][0].get<double>() * s;
+    light["position"][1] = light["position"][1].get<double>() * s;
+  }
+  scale_circle(m["start"]["circle"]);
+  scale_circle(m["objective"]["region"]["circle"]);
+  return sd::parse_mission(m.dump(), "aac scaled to " + std::to_string(robots) + " robots");
+}
+
+void run_scaled(benchmark::State& state, const char* config) {
+  const sd::Mission mission = scaled_aac(static_cast<int>(state.range(0)));
+  const sd::ControlSoftware software = sd::parse_control_software(std::string(config));
+  sd::Simulation simulation(mission, software);
+  std::uint64_t seed = 1;
+  for (auto _ : state) benchmark::DoNotOptimize(simulation.run(seed++));
+  report_rates(state, mission);
+}
+void BM_ScalingAttractionStop(benchmark::State& state) { run_scaled(state, kAttractStop); }
+void BM_ScalingExplorationPhototaxis(benchmark::State& state) { run_scaled(state, kExplorePhototaxis); }
 
 BENCHMARK(BM_AacDesignSample)->Unit(benchmark::kMillisecond)->Iterations(8 * 25);
 BENCHMARK(BM_AacAttractionStop)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_AacExplorationPhototaxis)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_AacColourFollowingCamera)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_AacMapleTree)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+
+BENCHMARK(BM_ScalingAttractionStop)->Unit(benchmark::kMillisecond)->MinTime(1.0)->Arg(20)->Arg(50)->Arg(100)->Arg(200);
+BENCHMARK(BM_ScalingExplorationPhototaxis)->Unit(benchmark::kMillisecond)->MinTime(1.0)->Arg(20)->Arg(50)->Arg(100)->Arg(200);
 
 }  // namespace
 
