@@ -8,30 +8,12 @@
 #include <sstream>
 #include <sys/wait.h>
 
+#include "run_cli.hpp"
+
 namespace {
 
-struct Result {
-  int status;
-  std::string out, err;
-};
-
-Result run(const std::string& args) {
-  const auto dir = std::filesystem::temp_directory_path();
-  const auto err_file = dir / ("sd_cli_err_" + std::to_string(::getpid()));
-  const std::string command = std::string(SWARMDESIGN_BINARY) + " " + args + " 2>" + err_file.string();
-  FILE* pipe = ::popen(command.c_str(), "r");
-  Result r;
-  char buffer[4096];
-  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) r.out.append(buffer, n);
-  const int status = ::pclose(pipe);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream err(err_file);
-  std::stringstream ss;
-  ss << err.rdbuf();
-  r.err = ss.str();
-  std::filesystem::remove(err_file);
-  return r;
-}
+using Result = sd::test::CliResult;
+Result run(const std::string& args) { return sd::test::run_cli(args); }
 
 int count_lines_starting(const std::string& text, const std::string& prefix) {
   int n = 0;

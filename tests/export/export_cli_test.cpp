@@ -10,29 +10,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "run_cli.hpp"
+
 namespace {
 
-struct Result {
-  int status;
-  std::string out, err;
-};
-
-Result run(const std::string& args) {
-  const auto err_file = std::filesystem::temp_directory_path() / ("sd_export_err_" + std::to_string(::getpid()));
-  const std::string command = std::string(SWARMDESIGN_BINARY) + " " + args + " 2>" + err_file.string();
-  FILE* pipe = ::popen(command.c_str(), "r");
-  Result r;
-  char buffer[4096];
-  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) r.out.append(buffer, n);
-  const int status = ::pclose(pipe);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream err(err_file);
-  std::stringstream ss;
-  ss << err.rdbuf();
-  r.err = ss.str();
-  std::filesystem::remove(err_file);
-  return r;
-}
+using Result = sd::test::CliResult;
+Result run(const std::string& args) { return sd::test::run_cli(args); }
 
 TEST(export_Cli, ExportArgosPrintsTheOneDigitString) {
   const Result r = run("export --argos --fsm-config --nstates 1 --s0 24 --att0 2 --cle0 4");
