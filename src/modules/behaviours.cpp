@@ -115,29 +115,22 @@ Actuation run_behaviour(const ModuleInstance& b, BehaviourMemory& memory, const 
     case 11:
       return {0.0, 0.0};
     case 12:
-      return wheels_towards(with_fallback(rm.light - rm.proximity * 5.0));
+      return wheels_towards(phototaxis_vector(rm));
     case 13:
-      return wheels_towards(with_fallback(-rm.light - rm.proximity * 5.0));
-    case 14: {
-      const double alpha = std::trunc(prm[0]);  // stored as UInt8 by AutoMoDe
-      return wheels_towards(with_fallback(rm.attraction(alpha) - rm.proximity * 6.0));
-    }
-    case 15: {
-      const double alpha = std::trunc(prm[0]);
-      // alpha enters twice (inside A and outside): repulsion grows with rep^2.
-      return wheels_towards(with_fallback(rm.attraction(alpha) * -alpha - rm.proximity * 5.0));
-    }
+      return wheels_towards(anti_phototaxis_vector(rm));
+    case 14:
+      return wheels_towards(attraction_vector(rm, prm[0]));
+    case 15:
+      return wheels_towards(repulsion_vector(rm, prm[0], /*rep_squared=*/true));
     // TuttiFrutti: the Chocolate laws plus the LED colour cle (last parameter but clr).
     case 20:
       return with_led(exploration(prm[0], kChocolateObstacleSquaredReading, memory, rm, rng), prm[1]);
     case 21:
       return with_led({0.0, 0.0}, prm[0]);
     case 24:
-      return with_led(wheels_towards(with_fallback(rm.attraction(std::trunc(prm[0])) - rm.proximity * 6.0)), prm[1]);
-    case 25: {
-      const double alpha = std::trunc(prm[0]);
-      return with_led(wheels_towards(with_fallback(rm.attraction(alpha) * -alpha - rm.proximity * 5.0)), prm[1]);
-    }
+      return with_led(wheels_towards(attraction_vector(rm, prm[0])), prm[1]);
+    case 25:
+      return with_led(wheels_towards(repulsion_vector(rm, prm[0], /*rep_squared=*/true)), prm[1]);
     case 28: {  // GoToColor: vel, cle, clr; no small-vector fallback
       const Vec2 c = color_vector(rm, palette_color(static_cast<int>(prm[2])));
       const double length = c.length();

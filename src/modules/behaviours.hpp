@@ -2,6 +2,7 @@
 // Control laws of the behaviour modules (modules-and-grammar.md §3-4). A behaviour reads the
 // reference model, may keep a little memory between steps, and sets the wheels (cm/s) and
 // the RGB LEDs.
+#include <cmath>
 #include <cstdint>
 
 #include "core/rng.hpp"
@@ -30,6 +31,22 @@ struct Actuation {
 
 /// Vectors shorter than 0.1 become "straight ahead" (AutoMoDe's small-vector fallback).
 inline Vec2 with_fallback(Vec2 v) { return v.squared_length() < 0.01 ? Vec2{1.0, 0.0} : v; }
+
+/// The direction laws of RM1.2's vector behaviours, with the small-vector fallback, shared by
+/// every flavour that has them; each flavour turns the vector into wheel speeds its own way
+/// (Chocolate and TuttiFrutti: wheels_towards; Maple: maple::bounded_wheels_towards).
+inline Vec2 phototaxis_vector(const ReferenceModel& rm) { return with_fallback(rm.light - rm.proximity * 5.0); }
+inline Vec2 anti_phototaxis_vector(const ReferenceModel& rm) { return with_fallback(-rm.light - rm.proximity * 5.0); }
+/// att is stored as a UInt8 by AutoMoDe: its integer part counts.
+inline Vec2 attraction_vector(const ReferenceModel& rm, double att) {
+  return with_fallback(rm.attraction(std::trunc(att)) - rm.proximity * 6.0);
+}
+/// -A(rep) x strength - 5 P: master (Chocolate, TuttiFrutti) applies rep twice, inside A and
+/// again as the strength (repulsion grows with rep^2); the BT branch (Maple) once, strength 1.
+inline Vec2 repulsion_vector(const ReferenceModel& rm, double rep, bool rep_squared) {
+  const double alpha = std::trunc(rep);
+  return with_fallback(rm.attraction(alpha) * -(rep_squared ? alpha : 1.0) - rm.proximity * 5.0);
+}
 
 /// The colour vector of TuttiFrutti: sum over blobs of the colour at >= 6 cm of
 /// 1 / (distance + 1) towards the blob.

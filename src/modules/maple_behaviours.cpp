@@ -32,19 +32,14 @@ Actuation run_behaviour(const ModuleInstance& b, BehaviourMemory& memory, const 
     case 41:
       return {0.0, 0.0};
     case 42:
-      return bounded_wheels_towards(with_fallback(rm.light - rm.proximity * 5.0));
+      return bounded_wheels_towards(phototaxis_vector(rm));
     case 43:
-      return bounded_wheels_towards(with_fallback(-rm.light - rm.proximity * 5.0));
-    case 44: {
-      const double alpha = std::trunc(prm[0]);  // stored as UInt8 by AutoMoDe
-      return bounded_wheels_towards(with_fallback(rm.attraction(alpha) - rm.proximity * 6.0));
-    }
-    case 45: {
-      // The BT branch's Repulsion applies rep once, inside A(rep): -A(rep) - 5 P (master and
-      // Chocolate multiply by rep again).
-      const double alpha = std::trunc(prm[0]);
-      return bounded_wheels_towards(with_fallback(-rm.attraction(alpha) - rm.proximity * 5.0));
-    }
+      return bounded_wheels_towards(anti_phototaxis_vector(rm));
+    case 44:
+      return bounded_wheels_towards(attraction_vector(rm, prm[0]));
+    case 45:
+      // The BT branch's Repulsion applies rep once, inside A(rep): -A(rep) - 5 P.
+      return bounded_wheels_towards(repulsion_vector(rm, prm[0], /*rep_squared=*/false));
     default:
       return {0.0, 0.0};
   }
