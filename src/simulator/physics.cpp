@@ -32,6 +32,8 @@ void Physics::reset(int robots) {
     v->reserve(pair_count(n) + 8 * n);
   }
   close_pairs_.assign(pair_count(n) + 1, {});  // one spare slot for the branch-free append
+  wall_kept_.clear();
+  wall_kept_.reserve(pair_count(n) + 8 * n);  // as many as wall candidates can be
   start_.assign(n, {});
 }
 
@@ -178,6 +180,26 @@ void Physics::project_contacts(const ArenaModel& arena, SwarmState& swarm) {
   constexpr double kNegligible = 1e-12;  // metres of overlap not worth another pass
   std::span<const Candidate> pairs = pair_candidates_;
   std::size_t close = 0;
+  // dynamics2d's contacts only stop the approach, nothing pushes bodies apart (in the trace,
+  // epuck4's depth in the wall stays constant to 1e-10 m for 18 ticks; Chipmunk's default
+  // collision slop, 0.1, exceeds any overlap in metres): a robot that starts a sub-step
+  // overlapping a wall -- placed into one that the loop function added after placement --
+  // keeps that overlap, and leaves only by driving out (ARGoS SCA seed 2: epuck4 slides
+  // inside the back wall for 128 ticks). Only such walls keep overlaps: our projection ends
+  // every other contact touching, and the residue it may leave where two walls meet is solver
+  // error, not an overlap ARGoS would have. The overlap kept is the sub-step's start's, the
+  // same for every pass.
+  wall_kept_.resize(wall_candidates_.size());
+  for (std::size_t k = 0; k < wall_candidates_.size(); ++k) {
+    const Candidate& c = wall_candidates_[k];
+    const Wall& wall = arena.walls[c.b];
+    double kept = 0.0;
+    if (wall.placed_after_robots) {
+      const double start_gap = wall.distance(start_[c.a], nullptr) - kRadius;
+      kept = start_gap < -kKeptOverlap ? start_gap : 0.0;
+    }
+    wall_kept_[k] = kept;
+  }
   for (int pass = 0; pass < kProjectionPasses; ++pass) {
     bool pushed = false;
     for (const Candidate& c : pairs) {
@@ -203,25 +225,13 @@ void Physics::project_contacts(const ArenaModel& arena, SwarmState& swarm) {
       pb += push;
       pushed = true;
     }
-    for (const Candidate& c : wall_candidates_) {
+    for (std::size_t k = 0; k < wall_candidates_.size(); ++k) {
+      const Candidate& c = wall_candidates_[k];
       Vec2 normal;
       Vec2& p = swarm.position[c.a];
       const Wall& wall = arena.walls[c.b];
       const double gap = wall.distance(p, &normal) - kRadius;
-      if (gap >= 0.0) continue;
-      // dynamics2d's contacts only stop the approach, nothing pushes bodies apart (in the
-      // trace, epuck4's depth in the wall stays constant to 1e-10 m for 18 ticks; Chipmunk's
-      // default collision slop, 0.1, exceeds any overlap in metres): a robot that starts a
-      // sub-step overlapping a wall -- placed into one that the loop function added after
-      // placement -- keeps that overlap, and leaves only by driving out (ARGoS SCA seed 2:
-      // epuck4 slides inside the back wall for 128 ticks). Only such walls keep overlaps: our
-      // projection ends every other contact touching, and the residue it may leave where two
-      // walls meet is solver error, not an overlap ARGoS would have.
-      double kept = 0.0;
-      if (wall.placed_after_robots) {
-        const double start_gap = wall.distance(start_[c.a], nullptr) - kRadius;
-        kept = start_gap < -kKeptOverlap ? start_gap : 0.0;
-      }
+      const double kept = wall_kept_[k];
       if (gap >= kept) continue;
       p -= normal * (gap - kept);
       const Vec2 tangent{-normal.y, normal.x};

@@ -52,6 +52,7 @@ class Physics {
   std::vector<Candidate> pair_candidates_, wall_candidates_;
   std::vector<Candidate> close_pairs_;        // pairs within a millimetre of touching
   std::vector<Vec2> start_;                   // positions at the start of the sub-step
+  std::vector<double> wall_kept_;             // per wall candidate: the overlap it keeps this sub-step
 };
 
 }  // namespace sd
