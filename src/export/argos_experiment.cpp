@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <set>
+#include <utility>
 #include <sstream>
 #include <stdexcept>
 
@@ -12,6 +14,8 @@
 #include "core/geometry.hpp"
 #include "core/rng.hpp"
 #include "simulator/epuck.hpp"
+#include "simulator/placement.hpp"
+#include "simulator/swarm.hpp"
 
 namespace sd::argos {
 
@@ -59,6 +63,14 @@ void attr(pugi::xml_node node, const char* name, const std::string& value) {
   node.append_attribute(name).set_value(value.c_str());
 }
 
+/// A child element with its attributes in order: a sensor's or actuator's declaration.
+pugi::xml_node element(pugi::xml_node parent, const char* name,
+                       std::initializer_list<std::pair<const char*, std::string>> attributes) {
+  auto node = child(parent, name);
+  for (const auto& [key, value] : attributes) attr(node, key, value);
+  return node;
+}
+
 /// Walls the loop functions build themselves: TuttiFrutti's LED arena (build_arena) and the
 /// walls they add after placing the robots (SCA's shelter).
 std::set<std::size_t> walls_of_loop_functions(const Mission& m) {
@@ -85,23 +97,14 @@ double arena_half_side(const Mission& m) {
   return std::ceil(half + 0.5);
 }
 
-/// Start poses drawn from the mission's start region, off the walls and each other.
-std::vector<std::pair<Vec2, double>> start_poses(const Mission& m, std::uint64_t seed) {
+/// The start poses of a SwarmDesign run of the mission with this seed (Simulation::reset's
+/// placement): off the walls and each other as the loop functions' MoveRobots draws them.
+SwarmState start_poses(const Mission& m, std::uint64_t seed) {
+  SwarmState swarm;
+  swarm.resize(m.robots, static_cast<int>(m.arena.leds.size()));
   Rng rng(seed);
-  constexpr double r = epuck::kBodyRadius;
-  std::vector<std::pair<Vec2, double>> poses;
-  for (int i = 0; i < m.robots; ++i) {
-    bool placed = false;
-    for (int trial = 0; trial < 100000 && !placed; ++trial) {
-      const Vec2 p = m.draw_start(rng);
-      placed = std::all_of(m.arena.walls.begin(), m.arena.walls.end(),
-                           [&](const Wall& w) { return w.distance(p, nullptr) > r + 0.005; }) &&
-               std::all_of(poses.begin(), poses.end(), [&](const auto& q) { return (q.first - p).length() > 2 * r + 0.01; });
-      if (placed) poses.emplace_back(p, rng.uniform(-180.0, 180.0));
-    }
-    if (!placed) throw std::runtime_error("cannot place e-puck " + std::to_string(i) + " in the mission's start region");
-  }
-  return poses;
+  place_robots(m.arena, [&m](Rng& r) { return m.draw_start(r); }, swarm, rng);
+  return swarm;
 }
 
 void write_loop_functions(pugi::xml_node root, const Mission& m, const ExperimentOptions& options, Experiment& out) {
@@ -135,45 +138,22 @@ void write_controller(pugi::xml_node root, const Mission& m, const ExperimentOpt
   attr(controller, "id", "automode");
   attr(controller, "library", options.automode_library);
   auto actuators = child(controller, "actuators");
-  auto wheels = child(actuators, "epuck_wheels");
-  attr(wheels, "implementation", "default");
-  attr(wheels, "noise_std_dev", number(r.wheel_noise));
-  auto leds = child(actuators, "epuck_rgb_leds");
-  attr(leds, "implementation", "default");
-  attr(leds, "medium", "leds");
-  auto rab_out = child(actuators, "epuck_range_and_bearing");
-  attr(rab_out, "implementation", "medium");
-  attr(rab_out, "medium", "rab");
-  attr(rab_out, "data_size", "4");
-  attr(rab_out, "range", number(r.rab_range));
+  element(actuators, "epuck_wheels", {{"implementation", "default"}, {"noise_std_dev", number(r.wheel_noise)}});
+  element(actuators, "epuck_rgb_leds", {{"implementation", "default"}, {"medium", "leds"}});
+  element(actuators, "epuck_range_and_bearing",
+          {{"implementation", "medium"}, {"medium", "rab"}, {"data_size", "4"}, {"range", number(r.rab_range)}});
   auto sensors = child(controller, "sensors");
-  auto proximity = child(sensors, "epuck_proximity");
-  attr(proximity, "implementation", "default");
-  attr(proximity, "show_rays", "false");
-  attr(proximity, "noise_level", number(r.proximity_noise));
-  attr(proximity, "calibrated", "true");
-  auto rab_in = child(sensors, "epuck_range_and_bearing");
-  attr(rab_in, "implementation", "medium");
-  attr(rab_in, "medium", "rab");
-  attr(rab_in, "data_size", "4");
-  attr(rab_in, "loss_probability", number(r.rab_loss));
-  attr(rab_in, "calibrated", "true");
-  auto light = child(sensors, "epuck_light");
-  attr(light, "implementation", "default");
-  attr(light, "show_rays", "false");
-  attr(light, "noise_level", number(r.light_noise));
-  attr(light, "calibrated", "true");
-  auto ground = child(sensors, "epuck_ground");
-  attr(ground, "implementation", "rot_z_only");
-  attr(ground, "noise_level", number(r.ground_noise));
-  attr(ground, "calibrated", "true");
-  auto camera = child(sensors, "epuck_omnidirectional_camera");
-  attr(camera, "implementation", "rot_z_only");
-  attr(camera, "medium", "leds");
-  attr(camera, "show_rays", "false");
-  auto params = child(controller, "params");
-  attr(params, "readable", "false");
-  attr(params, "history", "false");
+  element(sensors, "epuck_proximity", {{"implementation", "default"}, {"show_rays", "false"},
+                                       {"noise_level", number(r.proximity_noise)}, {"calibrated", "true"}});
+  element(sensors, "epuck_range_and_bearing", {{"implementation", "medium"}, {"medium", "rab"}, {"data_size", "4"},
+                                               {"loss_probability", number(r.rab_loss)}, {"calibrated", "true"}});
+  element(sensors, "epuck_light", {{"implementation", "default"}, {"show_rays", "false"},
+                                   {"noise_level", number(r.light_noise)}, {"calibrated", "true"}});
+  element(sensors, "epuck_ground",
+          {{"implementation", "rot_z_only"}, {"noise_level", number(r.ground_noise)}, {"calibrated", "true"}});
+  element(sensors, "epuck_omnidirectional_camera",
+          {{"implementation", "rot_z_only"}, {"medium", "leds"}, {"show_rays", "false"}});
+  element(controller, "params", {{"readable", "false"}, {"history", "false"}});
 }
 
 void write_arena(pugi::xml_node root, const Mission& m, const ExperimentOptions& options, Experiment& out) {
@@ -233,13 +213,13 @@ void write_arena(pugi::xml_node root, const Mission& m, const ExperimentOptions&
                         "loop functions build them with argos3-arena");
 
   comment(arena, "Unique ids epuck0 ... : AutoMoDe's controller reads a robot's id from the digits after \"epuck\".");
-  const auto poses = start_poses(m, options.placement_seed);
-  for (std::size_t i = 0; i < poses.size(); ++i) {
+  const SwarmState poses = start_poses(m, options.placement_seed);
+  for (std::size_t i = 0; i < poses.position.size(); ++i) {
     auto epuck = child(arena, "e-puck");
     attr(epuck, "id", "epuck" + std::to_string(i));
     auto body = child(epuck, "body");
-    attr(body, "position", triple(poses[i].first.x, poses[i].first.y, 0));
-    attr(body, "orientation", triple(poses[i].second, 0, 0));
+    attr(body, "position", triple(poses.position[i].x, poses.position[i].y, 0));
+    attr(body, "orientation", triple(poses.yaw[i] * kDegreesPerRadian, 0, 0));
     attr(child(epuck, "controller"), "config", "automode");
   }
 }
