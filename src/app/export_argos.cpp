@@ -1,9 +1,11 @@
 #include "app/export_argos.hpp"
 
-#include <fstream>
+#include <stdexcept>
+#include <system_error>
 
 #include "app/errors.hpp"
 #include "app/inputs.hpp"
+#include "core/durable_file.hpp"
 
 namespace sd::app {
 
@@ -51,11 +53,12 @@ argos::Experiment export_mission(const MissionExportRequest& request) {
     throw InvalidRequest("--controller: automode_controller or automode_controller_bt, not '" + tag + "'");
   const Mission mission = load_requested_mission(request.mission);
   argos::Experiment experiment = argos::argos_experiment(mission, request.options);
-  std::ofstream out(request.out, std::ios::binary | std::ios::trunc);
-  if (!out) throw std::runtime_error("cannot write " + request.out.string());
-  out << experiment.xml;
-  out.close();
-  if (!out) throw std::runtime_error("cannot write " + request.out.string());
+  // A kill while writing leaves the old file or the new one, never half an experiment.
+  try {
+    replace_file_durably(request.out, experiment.xml, 0644, Umask::Applies);
+  } catch (const std::system_error& e) {
+    throw std::runtime_error("cannot write " + request.out.string() + ": " + e.code().message());
+  }
   return experiment;
 }
 
