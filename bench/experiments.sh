@@ -3,22 +3,44 @@
 # issue #17. Prints the --dry-run estimate of the full protocol next to the wall time of each
 # experiment. Re-running with the same --out resumes whatever was interrupted.
 #
-#   bench/experiments.sh [--scale 0.05] [--designs 3] [--threads N] [--out DIR] [--binary PATH]
+#   bench/experiments.sh [options]    (relative paths are taken from the repository root)
+#     --scale S       budget scale of every design (default 0.05)
+#     --designs N     designs per condition (default 3)
+#     --threads T     simulations in parallel; 0 = all cores (default 0)
+#     --out DIR       results folder (default: bench/results/experiments-<date>-<time>)
+#     --binary PATH   swarmdesign executable (default: $SWARMDESIGN, else the build folder's)
+#     -h, --help      show this help
 set -euo pipefail
-cd "$(dirname "$0")/.."
 
-scale=0.05 designs=3 threads=0 out="" binary="$PWD/build/swarmdesign"
+PROG=experiments
+SCRIPT_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+REPO_DIR="$(cd "$SCRIPT_DIR/.." && pwd)"
+# shellcheck source=SCRIPTDIR/lib/cli.sh
+source "$SCRIPT_DIR/lib/cli.sh" # die, usage_error, need_value, positive, non_negative, resolve_binary
+cd "$REPO_DIR"
+
+# The help is the comment block at the top of this file, without its "# ".
+usage() { awk 'NR > 1 { if (!/^#/) exit; sub(/^# ?/, ""); print }' "$SCRIPT_DIR/experiments.sh"; }
+
+scale=0.05 designs=3 threads=0 out="" binary=""
 while (($#)); do
   case "$1" in
-    --scale) scale="$2"; shift 2 ;;
-    --designs) designs="$2"; shift 2 ;;
-    --threads) threads="$2"; shift 2 ;;
-    --out) out="$2"; shift 2 ;;
-    --binary) binary="$2"; shift 2 ;;
-    -h|--help) sed -n 2,6p "$0"; exit 0 ;;
-    *) echo "experiments.sh: unknown option $1" >&2; exit 2 ;;
+    -h | --help) usage; exit 0 ;;
+    --scale) need_value "$@"; scale="$2"; shift 2 ;;
+    --designs) need_value "$@"; designs="$2"; shift 2 ;;
+    --threads) need_value "$@"; threads="$2"; shift 2 ;;
+    --out) need_value "$@"; out="$2"; shift 2 ;;
+    --binary) need_value "$@"; binary="$2"; shift 2 ;;
+    --scale=* | --designs=* | --threads=* | --out=* | --binary=*)
+      set -- "${1%%=*}" "${1#*=}" "${@:2}" ;;
+    *) usage_error "unknown argument '$1'" ;;
   esac
 done
+positive_number --scale "$scale"
+positive --designs "$designs"
+non_negative --threads "$threads"
+binary="$(resolve_binary "$binary")" || exit
+
 out="${out:-bench/results/experiments-$(date +%Y%m%d-%H%M%S)}"
 mkdir -p "$out"
 out="$(cd "$out" && pwd)"

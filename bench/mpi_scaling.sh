@@ -18,6 +18,8 @@ set -euo pipefail
 PROG=mpi_scaling
 SCRIPT_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 REPO_DIR="$(cd "$SCRIPT_DIR/.." && pwd)"
+# shellcheck source=SCRIPTDIR/lib/cli.sh
+source "$SCRIPT_DIR/lib/cli.sh" # die, usage_error, need_value, positive, resolve_binary
 
 usage() {
   cat <<EOF
@@ -41,7 +43,7 @@ Options:
                     (default 3); the designs run once per rank count
   --out FILE        results JSON (default: bench/results/mpi-scaling-<date>-<time>.json); the
                     raw logs and design folders go to the folder of the same name without .json
-  --binary PATH     swarmdesign executable (default: \$SWARMDESIGN, else build/swarmdesign)
+  --binary PATH     swarmdesign executable (default: \$SWARMDESIGN, else the build folder's)
   --mpirun-args A   extra mpirun options (default "--oversubscribe --bind-to none")
   -h, --help        show this help
 
@@ -55,15 +57,6 @@ Example (about 2 minutes on 2 idle cores; the 30 s check below, under a minute):
 EOF
 }
 
-die() {
-  echo "$PROG: error: $*" >&2
-  exit 1
-}
-usage_error() {
-  echo "$PROG: error: $* (see --help)" >&2
-  exit 2
-}
-
 # ---------------------------------------------------------------------------------------------
 # Options
 runs=1000
@@ -75,10 +68,9 @@ duration=""
 seed=1
 reps=3
 out=""
-binary="${SWARMDESIGN:-}"
+binary="" # --binary; resolve_binary falls back to $SWARMDESIGN, then the build folder
 mpirun_args="--oversubscribe --bind-to none"
 
-need_value() { [[ $# -ge 2 && -n "$2" ]] || usage_error "$1 needs a value"; }
 while [[ $# -gt 0 ]]; do
   case "$1" in
     -h | --help) usage; exit 0 ;;
@@ -99,7 +91,6 @@ while [[ $# -gt 0 ]]; do
     *) usage_error "unknown argument '$1'" ;;
   esac
 done
-positive() { [[ "$2" =~ ^[1-9][0-9]*$ ]] || usage_error "$1 must be a positive integer, not '$2'"; }
 positive --runs "$runs"
 positive --budget "$budget"
 positive --seed "$seed"
@@ -117,9 +108,7 @@ thread_counts="$(printf '%s\n' $thread_counts | sort -n -u | tr '\n' ' ' | sed '
 # Tools
 command -v mpirun >/dev/null 2>&1 || die "mpirun not found (Debian: apt-get install openmpi-bin)"
 command -v python3 >/dev/null 2>&1 || die "python3 not found"
-if [[ -z "$binary" ]]; then binary="$REPO_DIR/build/swarmdesign"; fi
-[[ -f "$binary" && -x "$binary" ]] || die "swarmdesign binary not found or not executable: $binary (give --binary PATH)"
-binary="$(cd "$(dirname "$binary")" && pwd)/$(basename "$binary")"
+binary="$(resolve_binary "$binary")" || exit
 version="$("$binary" --version 2>&1)" || die "$binary --version failed: $version"
 mpi_version="$(mpirun --version 2>&1 | head -n 1)"
 cores="$(nproc)"

@@ -14,6 +14,8 @@ set -euo pipefail
 PROG=native_vs_irace
 SCRIPT_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 REPO_DIR="$(cd "$SCRIPT_DIR/.." && pwd)"
+# shellcheck source=SCRIPTDIR/lib/cli.sh
+source "$SCRIPT_DIR/lib/cli.sh" # die, usage_error, need_value, positive, resolve_binary
 
 usage() {
   cat <<EOF
@@ -51,27 +53,17 @@ Example (the full benchmark, about an hour or more on 2 cores):
 EOF
 }
 
-die() {
-  echo "$PROG: error: $*" >&2
-  exit 1
-}
-usage_error() {
-  echo "$PROG: error: $* (see --help)" >&2
-  exit 2
-}
-
 # ---------------------------------------------------------------------------------------------
 # Options
 designs=5
 budget=20000
 threads="$(nproc)"
 out=""
-binary="${SWARMDESIGN:-}"
+binary="" # --binary; resolve_binary falls back to $SWARMDESIGN, then the build folder
 mission=aac
 eval_seeds=100001-100020
 irace_bin=""
 
-need_value() { [[ $# -ge 2 && -n "$2" ]] || usage_error "$1 needs a value"; }
 while [[ $# -gt 0 ]]; do
   case "$1" in
     -h | --help) usage; exit 0 ;;
@@ -88,9 +80,9 @@ while [[ $# -gt 0 ]]; do
     *) usage_error "unknown argument '$1'" ;;
   esac
 done
-[[ "$designs" =~ ^[1-9][0-9]*$ ]] || usage_error "--designs must be a positive integer, not '$designs'"
-[[ "$budget" =~ ^[1-9][0-9]*$ ]] || usage_error "--budget must be a positive integer, not '$budget'"
-[[ "$threads" =~ ^[1-9][0-9]*$ ]] || usage_error "--threads must be a positive integer, not '$threads'"
+positive --designs "$designs"
+positive --budget "$budget"
+positive --threads "$threads"
 [[ "$eval_seeds" =~ ^[0-9]+-[0-9]+$ ]] || usage_error "--eval-seeds must be a range A-B, not '$eval_seeds'"
 ((${eval_seeds%-*} <= ${eval_seeds#*-})) || usage_error "--eval-seeds: A must not exceed B in '$eval_seeds'"
 # Design seeds are 1..N: fresh seeds must not overlap them (irace's instance seeds are random).
@@ -114,16 +106,7 @@ if [[ -z "$irace_bin" ]]; then
 fi
 [[ -n "$irace_bin" && -x "$irace_bin" ]] || die "irace executable not found (give --irace PATH, or apt-get install r-cran-irace)"
 
-if [[ -z "$binary" ]]; then
-  if [[ -x "$REPO_DIR/build/swarmdesign" ]]; then
-    binary="$REPO_DIR/build/swarmdesign"
-  elif [[ -d "$REPO_DIR/build" ]]; then
-    binary="$(find "$REPO_DIR/build" -name swarmdesign -type f -perm -u+x 2>/dev/null | head -n 1)"
-  fi
-  [[ -n "$binary" ]] || die "swarmdesign binary not found under $REPO_DIR/build: build it or give --binary PATH"
-fi
-[[ -f "$binary" && -x "$binary" ]] || die "swarmdesign binary not found or not executable: $binary"
-binary="$(cd "$(dirname "$binary")" && pwd)/$(basename "$binary")"
+binary="$(resolve_binary "$binary")" || exit
 export SWARMDESIGN="$binary" # target-runner uses it; irace-export also writes this path into it
 
 direction="$("$binary" missions --json | jq -r --arg m "$mission" '.[] | select(.name == $m) | .direction')"
