@@ -29,6 +29,18 @@ ControlSoftware read_back(const argos::LegacyString& exported) {
   return parse_control_software(exported.text, options);
 }
 
+/// The message of the ExportRefused that exporting `software` must throw (empty, and the test
+/// fails, if it exports).
+std::string refusal(const ControlSoftware& software, const ExportOptions& options = {}) {
+  try {
+    to_legacy_string(software, options);
+  } catch (const ExportRefused& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "exported, but should have been refused";
+  return {};
+}
+
 /// Token name -> value of a configuration string (order-free comparison).
 std::map<std::string, double> token_values(const std::string& text) {
   const auto tokens = split_tokens(text);
@@ -161,62 +173,39 @@ INSTANTIATE_TEST_SUITE_P(Flavours, export_EveryFlavour,
 
 TEST(export_LegacyString, TuttiFruttiTreesAreRefusedForItsCodeBaseHasNone) {
   const auto trees = sampled(Flavour::TuttiFrutti, false, true, 1, 7);
-  try {
-    to_legacy_string(trees.front());
-    FAIL() << "a TuttiFrutti tree exported";
-  } catch (const ExportRefused& e) {
-    EXPECT_NE(std::string(e.what()).find("finite-state machines only"), std::string::npos) << e.what();
-  }
+  const std::string message = refusal(trees.front());
+  EXPECT_NE(message.find("finite-state machines only"), std::string::npos) << message;
 }
 
 TEST(export_LegacyString, MixedDesignsAreRefusedNamingEveryModule) {
   const ControlSoftware mixed = parse_control_software(
       "--fsm-config --nstates 2 --s0 10 --rwm0 5 --n0 1 --n0x0 0 --c0x0 27 --p0x0 0.5 --l0x0 2 --s1 24 --att1 2 --cle1 4");
-  try {
-    to_legacy_string(mixed);
-    FAIL() << "a mixed design exported";
-  } catch (const ExportRefused& e) {
-    const std::string message = e.what();
-    EXPECT_NE(message.find("mixes flavours"), std::string::npos) << message;
-    EXPECT_NE(message.find("state 0: 10 Exploration (chocolate)"), std::string::npos) << message;
-    EXPECT_NE(message.find("transition 0 of state 0: 27 ColorDetection (tuttifrutti)"), std::string::npos) << message;
-    EXPECT_NE(message.find("state 1: 24 Attraction (tuttifrutti)"), std::string::npos) << message;
-  }
+  const std::string message = refusal(mixed);
+  EXPECT_NE(message.find("mixes flavours"), std::string::npos) << message;
+  EXPECT_NE(message.find("state 0: 10 Exploration (chocolate)"), std::string::npos) << message;
+  EXPECT_NE(message.find("transition 0 of state 0: 27 ColorDetection (tuttifrutti)"), std::string::npos) << message;
+  EXPECT_NE(message.find("state 1: 24 Attraction (tuttifrutti)"), std::string::npos) << message;
   ExportOptions chocolate;
   chocolate.flavour = Flavour::Chocolate;
-  try {
-    to_legacy_string(mixed, chocolate);
-    FAIL() << "a mixed design exported as Chocolate";
-  } catch (const ExportRefused& e) {
-    const std::string message = e.what();
-    EXPECT_EQ(message.find("10 Exploration"), std::string::npos) << message;  // Chocolate's own module is fine
-    EXPECT_NE(message.find("27 ColorDetection (tuttifrutti)"), std::string::npos) << message;
-    EXPECT_NE(message.find("24 Attraction (tuttifrutti)"), std::string::npos) << message;
-  }
+  const std::string as_chocolate = refusal(mixed, chocolate);
+  EXPECT_EQ(as_chocolate.find("10 Exploration"), std::string::npos) << as_chocolate;  // Chocolate's own module is fine
+  EXPECT_NE(as_chocolate.find("27 ColorDetection (tuttifrutti)"), std::string::npos) << as_chocolate;
+  EXPECT_NE(as_chocolate.find("24 Attraction (tuttifrutti)"), std::string::npos) << as_chocolate;
   // A tree names its nodes.
   const ControlSoftware tree = parse_control_software(
       "--bt-config --nroot 3 --nchildroot 1 --n0 0 --nchild0 2 --n00 6 --c00 15 --p00 0.5 --n01 5 --a01 42 --p01 0");
-  try {
-    to_legacy_string(tree);
-    FAIL();
-  } catch (const ExportRefused& e) {
-    EXPECT_NE(std::string(e.what()).find("condition node 00: 15 FixedProbability (chocolate)"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("action node 01: 42 Phototaxis (maple)"), std::string::npos) << e.what();
-  }
+  const std::string of_tree = refusal(tree);
+  EXPECT_NE(of_tree.find("condition node 00: 15 FixedProbability (chocolate)"), std::string::npos) << of_tree;
+  EXPECT_NE(of_tree.find("action node 01: 42 Phototaxis (maple)"), std::string::npos) << of_tree;
 }
 
 TEST(export_LegacyString, DemiurgeNeighbourCountsExportOnlyWhenItReadsTheirXi) {
   // Demiurge reads xi from --n0x0, the destination token: 0 here, so xi 5 cannot be said.
   const ControlSoftware refused = parse_control_software(
       "--fsm-config --nstates 2 --s0 31 --n0 1 --n0x0 0 --c0x0 33 --p0x0 5 --w0x0 2 --s1 31");
-  try {
-    to_legacy_string(refused);
-    FAIL();
-  } catch (const ExportRefused& e) {
-    EXPECT_NE(std::string(e.what()).find("transition 0 of state 0: 33 NeighborsCount (coconut) has xi = 5"),
-              std::string::npos)
-        << e.what();
-  }
+  const std::string of_fsm = refusal(refused);
+  EXPECT_NE(of_fsm.find("transition 0 of state 0: 33 NeighborsCount (coconut) has xi = 5"), std::string::npos)
+      << of_fsm;
   // From state 0 of three, destination 2 is written --n0x1 1: xi 1 is what Demiurge reads.
   const ControlSoftware exported = parse_control_software(
       "--fsm-config --nstates 3 --s0 31 --n0 2 --n0x0 0 --c0x0 35 --p0x0 0.5 --n0x1 1 --c0x1 34 --p0x1 1 --w0x1 3 "
@@ -227,14 +216,10 @@ TEST(export_LegacyString, DemiurgeNeighbourCountsExportOnlyWhenItReadsTheirXi) {
   // Demiurge's tree builder hands a condition only the tokens from --c<id> on: no xi at all.
   const ControlSoftware tree = parse_control_software(
       "--bt-config --nroot 3 --nchildroot 1 --n0 0 --nchild0 2 --n00 6 --c00 53 --p00 6 --w00 1 --n01 5 --a01 51 --p01 0");
-  try {
-    to_legacy_string(tree);
-    FAIL();
-  } catch (const ExportRefused& e) {
-    EXPECT_NE(std::string(e.what()).find("condition node 00: 53 NeighborsCount (arlequin): Demiurge's tree builder"),
-              std::string::npos)
-        << e.what();
-  }
+  const std::string of_tree = refusal(tree);
+  EXPECT_NE(of_tree.find("condition node 00: 53 NeighborsCount (arlequin): Demiurge's tree builder"),
+            std::string::npos)
+      << of_tree;
 }
 
 TEST(export_LegacyString, EvoStickNetworksAreNotModularControlSoftware) {
