@@ -125,16 +125,24 @@ sd::Mission scaled_aac(int robots) {
   return sd::parse_mission(m.dump(), "aac scaled to " + std::to_string(robots) + " robots");
 }
 
-void run_scaled(benchmark::State& state, const char* config) {
+enum class PairSearch { chosen, all_pairs };
+
+void run_scaled(benchmark::State& state, const char* config, PairSearch search = PairSearch::chosen) {
   const sd::Mission mission = scaled_aac(static_cast<int>(state.range(0)));
   const sd::ControlSoftware software = sd::parse_control_software(std::string(config));
   sd::Simulation simulation(mission, software);
+  if (search == PairSearch::all_pairs) simulation.use_neighbour_grid(false);
   std::uint64_t seed = 1;
   for (auto _ : state) benchmark::DoNotOptimize(simulation.run(seed++));
   report_rates(state, mission);
 }
 void BM_ScalingAttractionStop(benchmark::State& state) { run_scaled(state, kAttractStop); }
 void BM_ScalingExplorationPhototaxis(benchmark::State& state) { run_scaled(state, kExplorePhototaxis); }
+// The same without the neighbour grid: what it saves, side by side.
+void BM_ScalingAttractionStopAllPairs(benchmark::State& state) { run_scaled(state, kAttractStop, PairSearch::all_pairs); }
+void BM_ScalingExplorationPhototaxisAllPairs(benchmark::State& state) {
+  run_scaled(state, kExplorePhototaxis, PairSearch::all_pairs);
+}
 
 BENCHMARK(BM_AacDesignSample)->Unit(benchmark::kMillisecond)->Iterations(8 * 25);
 BENCHMARK(BM_AacAttractionStop)->Unit(benchmark::kMillisecond)->MinTime(2.0);
@@ -144,6 +152,8 @@ BENCHMARK(BM_AacMapleTree)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
 BENCHMARK(BM_ScalingAttractionStop)->Unit(benchmark::kMillisecond)->MinTime(1.0)->Arg(20)->Arg(50)->Arg(100)->Arg(200);
 BENCHMARK(BM_ScalingExplorationPhototaxis)->Unit(benchmark::kMillisecond)->MinTime(1.0)->Arg(20)->Arg(50)->Arg(100)->Arg(200);
+BENCHMARK(BM_ScalingAttractionStopAllPairs)->Unit(benchmark::kMillisecond)->MinTime(1.0)->Arg(20)->Arg(50)->Arg(100)->Arg(200);
+BENCHMARK(BM_ScalingExplorationPhototaxisAllPairs)->Unit(benchmark::kMillisecond)->MinTime(1.0)->Arg(20)->Arg(50)->Arg(100)->Arg(200);
 
 }  // namespace
 

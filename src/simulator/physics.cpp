@@ -63,11 +63,12 @@ void Physics::step(const ArenaModel& arena, SwarmState& swarm) {
       const RobotPair& pair = swarm.pairs[sensed.close_pairs[static_cast<std::size_t>(k)]];
       if (pair.distance_sq < pair_limit_sq) pair_candidates_.push_back({pair.a, pair.b});
     }
-  } else {
-    for (const RobotPair& pair : swarm.pairs) {
-      const Vec2 d = swarm.position[pair.b] - swarm.position[pair.a];
-      if (d.squared_length() < pair_limit_sq) pair_candidates_.push_back({pair.a, pair.b});
-    }
+  } else {  // every pair, in the order of the pair table (the first tick of a run)
+    for (int a = 0; a < n; ++a)
+      for (int b = a + 1; b < n; ++b) {
+        const Vec2 d = swarm.position[b] - swarm.position[a];
+        if (d.squared_length() < pair_limit_sq) pair_candidates_.push_back({static_cast<std::uint16_t>(a), static_cast<std::uint16_t>(b)});
+      }
   }
   wall_candidates_.clear();
   const double wall_limit = kRadius + reach;

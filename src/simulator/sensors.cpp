@@ -8,6 +8,7 @@
 #include "core/math.hpp"
 #include "core/vector_clones.hpp"
 #include "simulator/epuck.hpp"
+#include "simulator/neighbour_grid.hpp"
 
 namespace sd {
 
@@ -61,11 +62,52 @@ double ray_disc_entry(Vec2 origin, Vec2 direction, Vec2 center, double radius) {
   return -b - std::sqrt(disc);
 }
 
-void update_pairs(SwarmState& swarm) {
-  constexpr double kCloseSq = kProximityPairRange * kProximityPairRange;
+namespace {
+
+constexpr double kCloseSq = kProximityPairRange * kProximityPairRange;
+
+/// The pairs within `range` of a large swarm, from the neighbour grid, in the order of the
+/// full table (a, then b, ascending) so that everything downstream runs as in a small swarm.
+void list_near_pairs(SwarmState& swarm, double range) {
+  SensorWorkspace& ws = swarm.sensing;
+  ws.pair_range = range;
+  ws.grid.build(ws.position_x.data(), ws.position_y.data(), swarm.size, range);
+  const NeighbourGrid& grid = ws.grid;
+  const double range_sq = range * range;
+  swarm.pairs.clear();  // capacity for every pair is reserved: no allocation
+  int close = 0;
+  for (int a = 0; a < swarm.size; ++a) {
+    const double x = ws.position_x[a], y = ws.position_y[a];
+    std::size_t count = 0;
+    grid.for_each_run(x - range, y - range, x + range, y + range, [&](int begin, int end) {
+      for (int k = begin; k < end; ++k) {
+        const double dx = grid.x()[k] - x, dy = grid.y()[k] - y;
+        if (grid.robot()[k] > a && dx * dx + dy * dy < range_sq) ws.candidates[count++] = grid.robot()[k];
+      }
+    });
+    std::sort(ws.candidates.begin(), ws.candidates.begin() + static_cast<std::ptrdiff_t>(count));
+    for (std::size_t k = 0; k < count; ++k) {
+      const std::uint16_t b = ws.candidates[k];
+      const Vec2 delta = swarm.position[b] - swarm.position[a];
+      const double distance_sq = delta.squared_length();
+      ws.close_pairs[static_cast<std::size_t>(close)] = static_cast<std::uint32_t>(swarm.pairs.size());
+      close += distance_sq < kCloseSq ? 1 : 0;
+      swarm.pairs.push_back({static_cast<std::uint16_t>(a), b, delta, distance_sq});
+    }
+  }
+  ws.close_pair_count = close;
+}
+
+}  // namespace
+
+void update_pairs(SwarmState& swarm, double range) {
   for (int i = 0; i < swarm.size; ++i) {
     swarm.sensing.position_x[i] = swarm.position[i].x;
     swarm.sensing.position_y[i] = swarm.position[i].y;
+  }
+  if (swarm.sensing.use_grid) {
+    list_near_pairs(swarm, std::max(range, kProximityPairRange));
+    return;
   }
   // Whether a pair is close is a coin toss for the branch predictor inside a cluster, so
   // every index is written and the count advances only for close pairs.
@@ -74,7 +116,7 @@ void update_pairs(SwarmState& swarm) {
     RobotPair& pair = swarm.pairs[k];
     pair.delta = swarm.position[pair.b] - swarm.position[pair.a];
     pair.distance_sq = pair.delta.squared_length();
-    swarm.sensing.close_pairs[static_cast<std::size_t>(close)] = static_cast<std::uint16_t>(k);
+    swarm.sensing.close_pairs[static_cast<std::size_t>(close)] = static_cast<std::uint32_t>(k);
     close += pair.distance_sq < kCloseSq ? 1 : 0;
   }
   swarm.sensing.close_pair_count = close;
@@ -196,8 +238,19 @@ void sense_light(const ArenaModel& arena, const RobotModel& model, SwarmState& s
           const double t = ray_disc_entry(p, dir, center, kRadius);
           return t >= 0.0 && t <= reach;
         };
-        for (int j = 0; j < n && !occluded; ++j)
-          occluded = j != i && (swarm.position[j] - p).squared_length() < reach_sq && blocks(swarm.position[j]);
+        auto blocks_from = [&](int j) {
+          return j != i && (swarm.position[j] - p).squared_length() < reach_sq && blocks(swarm.position[j]);
+        };
+        if (!swarm.sensing.use_grid) {
+          for (int j = 0; j < n && !occluded; ++j) occluded = blocks_from(j);
+        } else {  // a blocking body's centre lies within r of the ray's first `reach`
+          const NeighbourGrid& grid = swarm.sensing.grid;
+          const Vec2 end = p + dir * reach;
+          grid.for_each_run(std::min(p.x, end.x) - kRadius, std::min(p.y, end.y) - kRadius, std::max(p.x, end.x) + kRadius,
+                            std::max(p.y, end.y) + kRadius, [&](int begin, int stop) {
+                              for (int k = begin; k < stop && !occluded; ++k) occluded = blocks_from(grid.robot()[k]);
+                            });
+        }
       }
       if (occluded) continue;
       const double dz = light.position.z;
@@ -232,27 +285,41 @@ void sense_ground(const ArenaModel& arena, const RobotModel& model, SwarmState& 
 
 namespace {
 
-/// True if no other robot's body touches the segment between the two robots of `pair`. The
-/// RAB ray runs at 5.2 cm, below every body's top, so any body on it blocks the packet.
-SD_VECTOR_CLONES bool no_robot_between(const SwarmState& swarm, const RobotPair& pair) {
-  // A body touches the segment a-b when its centre projects strictly inside the segment and
-  // lies within r of the line. (Its distance to an end would also do, but no body comes
-  // within r of another's centre, and the two ends themselves project onto the segment's
-  // ends, so they are not counted.) One branch-free pass over the coordinate arrays, which
-  // vectorises: a hit selects 1 instead of adding it, so no lane waits for the sum of another.
-  const double ax = swarm.sensing.position_x[pair.a], ay = swarm.sensing.position_y[pair.a];
-  const double abx = pair.delta.x, aby = pair.delta.y;
-  const double len2 = pair.distance_sq;
+/// 1 if one of the centres (x[k], y[k]), k in [begin, end), lies within r of the line
+/// through a along ab and projects strictly inside the segment, else 0. One branch-free
+/// pass, which vectorises: a hit selects 1 instead of adding it, so no lane waits for the
+/// sum of another.
+SD_VECTOR_CLONES double body_on_segment(const double* x, const double* y, int begin, int end, double ax, double ay,
+                                        double abx, double aby, double len2) {
   const double line_limit = kRadius * kRadius * len2;
-  const double* x = swarm.sensing.position_x.data();
-  const double* y = swarm.sensing.position_y.data();
   double hit = 0.0;
-  for (int k = 0; k < swarm.size; ++k) {
+  for (int k = begin; k < end; ++k) {
     const double cx = x[k] - ax, cy = y[k] - ay;
     const double along = cx * abx + cy * aby;
     const double cross = cx * aby - cy * abx;
     hit = (along > 0.0) & (along < len2) & (cross * cross < line_limit) ? 1.0 : hit;
   }
+  return hit;
+}
+
+/// True if no other robot's body touches the segment between the two robots of `pair`. The
+/// RAB ray runs at 5.2 cm, below every body's top, so any body on it blocks the packet.
+bool no_robot_between(const SwarmState& swarm, const RobotPair& pair) {
+  // A body touches the segment a-b when its centre projects strictly inside the segment and
+  // lies within r of the line. (Its distance to an end would also do, but no body comes
+  // within r of another's centre, and the two ends themselves project onto the segment's
+  // ends, so they are not counted.)
+  const SensorWorkspace& ws = swarm.sensing;
+  const double ax = ws.position_x[pair.a], ay = ws.position_y[pair.a];
+  const double abx = pair.delta.x, aby = pair.delta.y, len2 = pair.distance_sq;
+  if (!ws.use_grid) return body_on_segment(ws.position_x.data(), ws.position_y.data(), 0, swarm.size, ax, ay, abx, aby, len2) == 0.0;
+  // Only centres within r of the segment's box can touch it.
+  const double bx = ws.position_x[pair.b], by = ws.position_y[pair.b];
+  double hit = 0.0;
+  ws.grid.for_each_run(std::min(ax, bx) - kRadius, std::min(ay, by) - kRadius, std::max(ax, bx) + kRadius,
+                       std::max(ay, by) + kRadius, [&](int begin, int end) {
+                         if (hit == 0.0) hit = body_on_segment(ws.grid.x(), ws.grid.y(), begin, end, ax, ay, abx, aby, len2);
+                       });
   return hit == 0.0;
 }
 
@@ -260,16 +327,17 @@ SD_VECTOR_CLONES bool no_robot_between(const SwarmState& swarm, const RobotPair&
 
 void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng) {
   std::fill(swarm.rab_count.begin(), swarm.rab_count.end(), 0);
+  if (swarm.sensing.use_grid && swarm.sensing.pair_range < model.rab_range) update_pairs(swarm, model.rab_range);
   const std::size_t stride = swarm.rab_stride();
   const double range_sq = model.rab_range * model.rab_range;
   const auto loss_threshold = static_cast<std::uint64_t>(model.rab_loss * 4294967296.0);
   // Whether a pair is in range, and whether a packet survives loss, are coin tosses for the
   // branch predictor; the pairs are therefore filtered in two branch-free passes (every
   // index written, the count advanced only for the kept ones), in pair order as before.
-  std::uint16_t* kept = swarm.sensing.rab_pairs.data();
+  std::uint32_t* kept = swarm.sensing.rab_pairs.data();
   int in_range = 0;
   for (std::size_t k = 0; k < swarm.pairs.size(); ++k) {
-    kept[in_range] = static_cast<std::uint16_t>(k);
+    kept[in_range] = static_cast<std::uint32_t>(k);
     in_range += swarm.pairs[k].distance_sq < range_sq ? 1 : 0;
   }
   // Loss is drawn first: line of sight is only worth computing for the 28 % of pairs where a
@@ -327,14 +395,27 @@ void sense_camera(const ArenaModel& arena, const RobotModel& model, SwarmState& 
       out[count++] = {rgb, d > 0.0 ? local * (1.0 / d) : Vec2{1.0, 0.0}, d * 100.0};
     };
     // Robots never occlude LEDs: the ray stays above their 7.6 cm tops down to 7.65 cm.
-    for (int j = 0; j < swarm.size; ++j) {
+    auto see_robot = [&](int j) {
       const std::uint32_t rgb = swarm.led[static_cast<std::size_t>(j)];
-      if (rgb == 0 || j == i) continue;
+      if (rgb == 0 || j == i) return;
       const Vec2 led = swarm.position[j] + swarm.heading[j] * kRgbLedOffset;
       const Vec2 offset = led - p;
-      if (!in_view(offset)) continue;
-      if (!arena.camera_line_of_sight(camera, {led.x, led.y, epuck::kRgbLedElevation})) continue;
+      if (!in_view(offset)) return;
+      if (!arena.camera_line_of_sight(camera, {led.x, led.y, epuck::kRgbLedElevation})) return;
       add(rgb, offset);
+    };
+    if (!swarm.sensing.use_grid) {
+      for (int j = 0; j < swarm.size; ++j) see_robot(j);
+    } else {  // the robots whose LED can be in view, in index order as above
+      const NeighbourGrid& grid = swarm.sensing.grid;
+      std::uint16_t* candidate = swarm.sensing.candidates.data();
+      std::size_t found = 0;
+      const double reach = half_range - kRgbLedOffset;
+      grid.for_each_run(p.x - reach, p.y - reach, p.x + reach, p.y + reach, [&](int begin, int end) {
+        for (int k = begin; k < end; ++k) candidate[found++] = grid.robot()[k];
+      });
+      std::sort(candidate, candidate + found);
+      for (std::size_t k = 0; k < found; ++k) see_robot(candidate[k]);
     }
     for (std::size_t k = 0; k < arena.leds.size(); ++k) {
       const std::uint32_t rgb = swarm.arena_led_color[k];
@@ -350,7 +431,7 @@ void sense_camera(const ArenaModel& arena, const RobotModel& model, SwarmState& 
 }
 
 void sense(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng, SensorSet sensors) {
-  update_pairs(swarm);
+  update_pairs(swarm, sensors.range_and_bearing ? model.rab_range : kProximityPairRange);
   if (sensors.range_and_bearing) sense_range_and_bearing(arena, model, swarm, rng);
   if (sensors.proximity) sense_proximity(arena, model, swarm, rng);
   if (sensors.light) sense_light(arena, model, swarm, rng);

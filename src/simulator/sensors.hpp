@@ -16,11 +16,12 @@ struct SensorSet {
   bool proximity = true, light = true, ground = true, range_and_bearing = true, camera = false;
 };
 
-/// Refreshes the pair table, and the close pairs and position arrays of swarm.sensing (call after physics,
-/// before sensing).
-void update_pairs(SwarmState& swarm);
 /// Centre distance below which a proximity ray of one robot can meet the other's body.
 inline constexpr double kProximityPairRange = epuck::kProximityRingRadius + epuck::kProximityRange + epuck::kBodyRadius;
+/// Refreshes the pair table (every pair within `range` at least, and kProximityPairRange),
+/// and the close pairs and position arrays of swarm.sensing (call after physics, before
+/// sensing).
+void update_pairs(SwarmState& swarm, double range = kProximityPairRange);
 
 void sense_proximity(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng);
 void sense_light(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng);
