@@ -77,9 +77,8 @@ struct SensorWorkspace {
 };
 
 /// From this many robots on, pairs are found with the neighbour grid. In AAC's density
-/// (bench/, BM_Scaling*) the grid is 1.2-1.3x faster than all pairs at 75-100 robots for
-/// exploration and as fast for attraction, whose clusters keep most robots near each
-/// other; at 20-50 robots all pairs are faster.
+/// (bench/, BM_Scaling*) the grid is 1.2-1.4x faster than all pairs at 75-100 robots for
+/// exploration and as fast for attraction; at 20-50 robots all pairs are faster.
 inline constexpr int kNeighbourGridFromRobots = 75;
 
 struct SwarmState {
