@@ -17,7 +17,6 @@ SCRIPT_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 REPO_DIR="$(cd "$SCRIPT_DIR/.." && pwd)"
 # shellcheck source=SCRIPTDIR/lib/cli.sh
 source "$SCRIPT_DIR/lib/cli.sh" # die, usage_error, need_value, positive, non_negative, resolve_binary
-cd "$REPO_DIR"
 
 # The help is the comment block at the top of this file, without its "# ".
 usage() { awk 'NR > 1 { if (!/^#/) exit; sub(/^# ?/, ""); print }' "$SCRIPT_DIR/experiments.sh"; }
@@ -41,9 +40,11 @@ positive --designs "$designs"
 non_negative --threads "$threads"
 binary="$(resolve_binary "$binary")" || exit
 
-out="${out:-bench/results/experiments-$(date +%Y%m%d-%H%M%S)}"
-mkdir -p "$out"
+# --out and --binary are read from where the script was called; the default goes in the repository.
+out="${out:-$REPO_DIR/bench/results/experiments-$(date +%Y%m%d-%H%M%S)}"
+mkdir -p "$out" || die "cannot create the results folder $out"
 out="$(cd "$out" && pwd)"
+cd "$REPO_DIR"
 export SWARMDESIGN_HOME="$out/home"
 password="bench-password-1"
 if [ ! -f "$SWARMDESIGN_HOME/swarmdesign.db" ]; then
@@ -55,11 +56,14 @@ fi
 
 for experiment in validation combination architecture; do
   echo "== $experiment: full protocol (dry run)"
-  "$binary" experiment "$experiment" --dry-run --threads "$threads" | tail -n 1
+  "$binary" experiment "$experiment" --dry-run --threads "$threads" | tail -n 1 ||
+    die "the dry run of $experiment failed"
   echo "== $experiment at budget scale $scale, $designs designs per condition"
   start=$(date +%s)
   "$binary" experiment "$experiment" --budget-scale "$scale" --designs "$designs" --threads "$threads" \
-    >"$out/$experiment.log" 2>&1
+    >"$out/$experiment.log" 2>&1 ||
+    die "$experiment failed (exit $?): $(tail -n 1 "$out/$experiment.log") (log: $out/$experiment.log); run again with the same --out to resume"
   echo "   wall time $(( $(date +%s) - start )) s (log: $out/$experiment.log)"
-  "$binary" report "$experiment" --out "$out/$experiment-report" | tee "$out/$experiment-report.txt"
+  "$binary" report "$experiment" --out "$out/$experiment-report" | tee "$out/$experiment-report.txt" ||
+    die "the report of $experiment failed"
 done
