@@ -125,8 +125,12 @@ EvolutionOutcome resume_evolution(const std::string& file, const EvolutionRun& r
   evostick::SavedEvolution saved = evostick::read_saved_evolution(file);
   const evostick::EvolutionTarget& target = saved.target;
   const std::string what = "the evolution in " + file;
-  if (const std::string refusal = results_version_refusal(what, target.results_version); !refusal.empty())
-    throw DesignFolderError(refusal);  // first: a module has no mission file to check
+  if (!target.module.empty()) {  // a module has no mission file to check, only its training arena
+    const evostick::ModuleTraining* module = evostick::find_module_training(target.module);
+    const int robots = module ? evostick::training_mission(*module).robots : 0;  // unknown: run_module says so
+    if (const std::string refusal = results_version_refusal(what, target.results_version, robots); !refusal.empty())
+      throw DesignFolderError(refusal);
+  }
   evostick::Settings settings = target.settings;
   try {
     settings.validate();

@@ -4,8 +4,8 @@
 
 namespace sd::app {
 
-std::string results_version_refusal(const std::string& what, int stored_results_version) {
-  if (stored_results_version == kResultsVersion) return "";
+std::string results_version_refusal(const std::string& what, int stored_results_version, int robots) {
+  if (scores_as_this_build(stored_results_version, robots)) return "";
   return what + " was run by a swarmdesign whose simulations score differently (results version " +
          std::to_string(stored_results_version) + ", this one " + std::to_string(kResultsVersion) +
          "), and resuming would mix runs of two simulators; finish it with that version, or start anew";
@@ -24,7 +24,7 @@ ResumeCheck check_resumable(const std::string& what, const std::string& mission_
     check.refusal = "the mission " + mission_reference + " has changed since " + what +
                     " started, and resuming would mix runs of two missions; restore it, or start anew";
   else
-    check.refusal = results_version_refusal(what, stored_results_version);
+    check.refusal = results_version_refusal(what, stored_results_version, check.mission.robots);
   return check;
 }
 

@@ -13,9 +13,9 @@ struct ResumeCheck {
   std::string refusal;  // one line saying why the runs cannot go on; empty when they can
 };
 
-/// Why runs kept under `stored_results_version` cannot go on in this build, or "" when they
-/// can; `what` names them ("the evolution in FILE").
-std::string results_version_refusal(const std::string& what, int stored_results_version);
+/// Why runs of a swarm of `robots` kept under `stored_results_version` cannot go on in this
+/// build, or "" when they can; `what` names them ("the evolution in FILE").
+std::string results_version_refusal(const std::string& what, int stored_results_version, int robots);
 
 /// The mission check, then the results version's. An empty `stored_digest` (kept before
 /// digests were) skips the mission check.
