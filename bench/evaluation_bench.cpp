@@ -138,10 +138,14 @@ void run_scaled(benchmark::State& state, const char* config, PairSearch search =
 }
 void BM_ScalingAttractionStop(benchmark::State& state) { run_scaled(state, kAttractStop); }
 void BM_ScalingExplorationPhototaxis(benchmark::State& state) { run_scaled(state, kExplorePhototaxis); }
+void BM_ScalingColourFollowingCamera(benchmark::State& state) { run_scaled(state, kColourFollowing); }
 // The same without the neighbour grid: what it saves, side by side.
 void BM_ScalingAttractionStopAllPairs(benchmark::State& state) { run_scaled(state, kAttractStop, PairSearch::all_pairs); }
 void BM_ScalingExplorationPhototaxisAllPairs(benchmark::State& state) {
   run_scaled(state, kExplorePhototaxis, PairSearch::all_pairs);
+}
+void BM_ScalingColourFollowingCameraAllPairs(benchmark::State& state) {
+  run_scaled(state, kColourFollowing, PairSearch::all_pairs);
 }
 
 BENCHMARK(BM_AacDesignSample)->Unit(benchmark::kMillisecond)->Iterations(8 * 25);
@@ -152,8 +156,10 @@ BENCHMARK(BM_AacMapleTree)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
 BENCHMARK(BM_ScalingAttractionStop)->Unit(benchmark::kMillisecond)->MinTime(1.0)->Arg(20)->Arg(50)->Arg(100)->Arg(200);
 BENCHMARK(BM_ScalingExplorationPhototaxis)->Unit(benchmark::kMillisecond)->MinTime(1.0)->Arg(20)->Arg(50)->Arg(100)->Arg(200);
+BENCHMARK(BM_ScalingColourFollowingCamera)->Unit(benchmark::kMillisecond)->MinTime(1.0)->Arg(20)->Arg(50)->Arg(100)->Arg(200);
 BENCHMARK(BM_ScalingAttractionStopAllPairs)->Unit(benchmark::kMillisecond)->MinTime(1.0)->Arg(20)->Arg(50)->Arg(100)->Arg(200);
 BENCHMARK(BM_ScalingExplorationPhototaxisAllPairs)->Unit(benchmark::kMillisecond)->MinTime(1.0)->Arg(20)->Arg(50)->Arg(100)->Arg(200);
+BENCHMARK(BM_ScalingColourFollowingCameraAllPairs)->Unit(benchmark::kMillisecond)->MinTime(1.0)->Arg(20)->Arg(50)->Arg(100)->Arg(200);
 
 }  // namespace
 
