@@ -8,9 +8,12 @@
 // The grid only ever narrows which robots are looked at; every caller applies its own exact
 // test to what it gets, in robot-index order where order matters, so results do not depend
 // on whether the grid is used.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
+
+#include "core/geometry.hpp"
 
 namespace sd {
 
@@ -34,6 +37,14 @@ class NeighbourGrid {
       const int end = cell_start_[static_cast<std::size_t>(base + last_column + 1)];
       if (begin < end) visit(begin, end);
     }
+  }
+
+  /// The same for the box spanned by a and b grown by `margin` on every side: the robots
+  /// within `margin` of a point (a == b) or of a segment a-b.
+  template <class Visit>
+  void for_each_run_near(Vec2 a, Vec2 b, double margin, Visit&& visit) const {
+    for_each_run(std::min(a.x, b.x) - margin, std::min(a.y, b.y) - margin, std::max(a.x, b.x) + margin,
+                 std::max(a.y, b.y) + margin, visit);
   }
 
   /// The binned robots: their indices and centres, cell by cell.

@@ -79,7 +79,7 @@ void list_near_pairs(SwarmState& swarm, double range) {
   for (int a = 0; a < swarm.size; ++a) {
     const double x = ws.position_x[a], y = ws.position_y[a];
     std::size_t count = 0;
-    grid.for_each_run(x - range, y - range, x + range, y + range, [&](int begin, int end) {
+    grid.for_each_run_near({x, y}, {x, y}, range, [&](int begin, int end) {
       for (int k = begin; k < end; ++k) {
         const double dx = grid.x()[k] - x, dy = grid.y()[k] - y;
         if (grid.robot()[k] > a && dx * dx + dy * dy < range_sq) ws.candidates[count++] = grid.robot()[k];
@@ -245,11 +245,9 @@ void sense_light(const ArenaModel& arena, const RobotModel& model, SwarmState& s
           for (int j = 0; j < n && !occluded; ++j) occluded = blocks_from(j);
         } else {  // a blocking body's centre lies within r of the ray's first `reach`
           const NeighbourGrid& grid = swarm.sensing.grid;
-          const Vec2 end = p + dir * reach;
-          grid.for_each_run(std::min(p.x, end.x) - kRadius, std::min(p.y, end.y) - kRadius, std::max(p.x, end.x) + kRadius,
-                            std::max(p.y, end.y) + kRadius, [&](int begin, int stop) {
-                              for (int k = begin; k < stop && !occluded; ++k) occluded = blocks_from(grid.robot()[k]);
-                            });
+          grid.for_each_run_near(p, p + dir * reach, kRadius, [&](int begin, int end) {
+            for (int k = begin; k < end && !occluded; ++k) occluded = blocks_from(grid.robot()[k]);
+          });
         }
       }
       if (occluded) continue;
@@ -313,13 +311,11 @@ bool no_robot_between(const SwarmState& swarm, const RobotPair& pair) {
   const double ax = ws.position_x[pair.a], ay = ws.position_y[pair.a];
   const double abx = pair.delta.x, aby = pair.delta.y, len2 = pair.distance_sq;
   if (!ws.use_grid) return body_on_segment(ws.position_x.data(), ws.position_y.data(), 0, swarm.size, ax, ay, abx, aby, len2) == 0.0;
-  // Only centres within r of the segment's box can touch it.
-  const double bx = ws.position_x[pair.b], by = ws.position_y[pair.b];
+  // Only centres within r of the segment can touch it.
   double hit = 0.0;
-  ws.grid.for_each_run(std::min(ax, bx) - kRadius, std::min(ay, by) - kRadius, std::max(ax, bx) + kRadius,
-                       std::max(ay, by) + kRadius, [&](int begin, int end) {
-                         if (hit == 0.0) hit = body_on_segment(ws.grid.x(), ws.grid.y(), begin, end, ax, ay, abx, aby, len2);
-                       });
+  ws.grid.for_each_run_near({ax, ay}, {ws.position_x[pair.b], ws.position_y[pair.b]}, kRadius, [&](int begin, int end) {
+    if (hit == 0.0) hit = body_on_segment(ws.grid.x(), ws.grid.y(), begin, end, ax, ay, abx, aby, len2);
+  });
   return hit == 0.0;
 }
 
@@ -410,8 +406,7 @@ void sense_camera(const ArenaModel& arena, const RobotModel& model, SwarmState& 
       const NeighbourGrid& grid = swarm.sensing.grid;
       std::uint16_t* candidate = swarm.sensing.candidates.data();
       std::size_t found = 0;
-      const double reach = half_range - kRgbLedOffset;
-      grid.for_each_run(p.x - reach, p.y - reach, p.x + reach, p.y + reach, [&](int begin, int end) {
+      grid.for_each_run_near(p, p, half_range - kRgbLedOffset, [&](int begin, int end) {
         for (int k = begin; k < end; ++k) candidate[found++] = grid.robot()[k];
       });
       std::sort(candidate, candidate + found);
