@@ -1,8 +1,10 @@
 // The editor and Exec, driven in headless chromium against the real server:
 // sign in; paste an FSM and see it drawn; edit a parameter in the drawing and see the string
-// change; a malformed string shows an inline error naming the token; Exec AAC with seed 3 moves
+// change; Export SVG draws the labels where the page does; a malformed string shows an inline
+// error naming the token; transition labels never cover each other; Exec AAC with seed 3 moves
 // the robots and ends on the score that `swarmdesign evaluate` prints.
 import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
 import { after, before, test } from 'node:test';
 import { cli, launchBrowser, newPage, screenshotter, signIn, startServer } from './helpers.mjs';
 
@@ -25,6 +27,20 @@ after(async () => {
 });
 
 const nodeCount = () => page.evaluate(() => window.__sd.editor.cy.nodes().length);
+// The transitions whose labels' boxes overlap, as "t0_0/t1_0" (the two transitions between
+// S0 and S1 bend apart; their labels must not cover each other).
+const overlappingLabels = (graph) => page.evaluate((graph) => {
+  const cy = graph === 'exec' ? window.__sd.exec.graph : window.__sd.editor.cy;
+  const only = { includeNodes: false, includeEdges: false, includeLabels: true, includeOverlays: false, includeUnderlays: false };
+  const boxes = cy.edges('[kind = "transition"]').map((e) => ({ id: e.id(), b: e.boundingBox(only) }));
+  const found = [];
+  for (let i = 0; i < boxes.length; i++)
+    for (let j = i + 1; j < boxes.length; j++) {
+      const a = boxes[i].b, b = boxes[j].b;
+      if (a.x1 < b.x2 && b.x1 < a.x2 && a.y1 < b.y2 && b.y1 < a.y2) found.push(`${boxes[i].id}/${boxes[j].id}`);
+    }
+  return found;
+}, graph);
 const configText = () => page.inputValue('#config-text');
 
 test('a wrong password is refused, the right one signs in', { timeout: 30000 }, async () => {
@@ -54,9 +70,31 @@ test('a pasted FSM string is drawn', { timeout: 20000 }, async () => {
   assert.match(labels[0], /10 Exploration/);
   assert.match(labels[1], /11 Stop/);
   assert.ok(await page.evaluate(() => window.__sd.editor.cy.getElementById('s0').hasClass('initial')));
+  assert.deepEqual(await overlappingLabels('editor'), []);
   await page.click('#graph', { position: { x: 5, y: 5 } }); // leave the text box: the canonical string appears
   await page.waitForFunction(() => document.getElementById('config-text').value.includes('--s0 10'));
   await shot(page, 'fsm-drawn');
+});
+
+test('Export SVG draws each transition label where the page does, apart from the other', { timeout: 20000 }, async () => {
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#export-svg')]);
+  assert.equal(download.suggestedFilename(), 'control-software.svg');
+  const svg = readFileSync(await download.path(), 'utf8');
+  assert.match(svg, /^<\?xml[^>]*>\s*<svg /);
+  assert.match(svg, />10 BlackFloor</);
+  assert.match(svg, />11 GrayFloor</);
+  // Label boxes are the white rectangles drawn with opacity 0.9, one per transition.
+  const boxes = [...svg.matchAll(/<rect x="([-\d.e]+)" y="([-\d.e]+)" width="([\d.e]+)" height="([\d.e]+)" fill="#fff" fill-opacity="0.9"\/>/g)]
+    .map((m) => m.slice(1).map(Number)).map(([x, y, w, h]) => ({ x1: x, y1: y, x2: x + w, y2: y + h }));
+  assert.equal(boxes.length, 2);
+  const [a, b] = boxes;
+  assert.ok(!(a.x1 < b.x2 && b.x1 < a.x2 && a.y1 < b.y2 && b.y1 < a.y2), `label boxes ${JSON.stringify(boxes)} overlap`);
+  const centres = await page.evaluate(() => window.__sd.editor.cy.edges('[kind = "transition"]').map((e) => {
+    const m = e.midpoint();
+    return { x: m.x + e.data('lx'), y: m.y + e.data('ly') };
+  }));
+  for (const c of centres)
+    assert.ok(boxes.some((r) => Math.abs((r.x1 + r.x2) / 2 - c.x) < 0.5 && Math.abs((r.y1 + r.y2) / 2 - c.y) < 0.5), `a label box centred on ${JSON.stringify(c)}`);
 });
 
 test('changing rwm in the drawing changes the string', { timeout: 20000 }, async () => {
@@ -98,6 +136,7 @@ test('Exec AAC with seed 3: robots move and the final score equals evaluate', { 
   await page.fill('#exec-seed', '3');
   await page.click('#exec-run');
   await page.waitForFunction(() => window.__sd.exec.run && window.__sd.exec.run.received > 50, null, { timeout: 30000 });
+  assert.deepEqual(await overlappingLabels('exec'), [], 'the narrow FSM drawing keeps its transition labels apart');
   await shot(page, 'exec-running');
   const moved = await page.evaluate(() => {
     const r = window.__sd.exec.run;

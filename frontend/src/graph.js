@@ -38,7 +38,7 @@ export function elementsOf(model) {
         els.push({
           group: 'edges',
           data: { id: `t${i}_${j}`, source: `s${i}`, target: `s${t.target}`, state: i, transition: j, kind: 'transition',
-                  label: `${moduleText('condition', t.condition)}${p ? `\n${p}` : ''}` },
+                  label: `${moduleText('condition', t.condition)}${p ? `\n${p}` : ''}`, lx: 0, ly: 0 },
         });
       });
     });
@@ -95,6 +95,7 @@ const STYLE = [
     'text-background-color': '#ffffff', 'text-background-opacity': 0.9, 'text-background-padding': 2, 'color': '#7a4d00',
     'control-point-step-size': 60,
   } },
+  { selector: 'edge[kind = "transition"]', style: { 'text-margin-x': 'data(lx)', 'text-margin-y': 'data(ly)' } },
   { selector: 'edge[kind = "child"]', style: { 'curve-style': 'taxi', 'taxi-direction': 'downward', 'target-arrow-shape': 'none' } },
   { selector: 'edge:selected', style: { 'line-color': '#e0a000', 'target-arrow-color': '#e0a000', width: 3 } },
   { selector: '.eh-handle, .eh-ghost-node', style: { 'background-color': '#e0a000', width: 10, height: 10, shape: 'ellipse', label: '' } },
@@ -108,7 +109,42 @@ export function createGraph(container, { readOnly = false } = {}) {
     selectionType: 'single',
   });
   cy.scratch('_sdCompact', readOnly); // narrow side panels: FSMs top to bottom
+  // A dragged state moves its transitions' curves, and their labels with them.
+  cy.on('position', 'node', (event) => placeEdgeLabels(event.target.connectedEdges()));
   return cy;
+}
+
+/// Where an edge's label is drawn: the curve's midpoint, moved by the label's margin.
+export function labelCentre(edge) {
+  const m = edge.midpoint();
+  return { x: m.x + (edge.data('lx') || 0), y: m.y + (edge.data('ly') || 0) };
+}
+
+/// Two transitions between the same states bend apart, but a label centred on each curve is
+/// wider than the gap between them, so the labels of a pair overlap (in the narrow
+/// top-to-bottom drawing, side by side). Each bent edge's label therefore moves to the outside
+/// of its bend, until its box just touches the curve's midpoint; straight edges keep theirs.
+function placeEdgeLabels(edges) {
+  edges.forEach((e) => {
+    if (e.data('kind') !== 'transition') return;
+    const s = e.sourceEndpoint();  // the chord between where the curve leaves and meets the boxes
+    const t = e.targetEndpoint();
+    const m = e.midpoint();
+    const dx = m.x - (s.x + t.x) / 2;
+    const dy = m.y - (s.y + t.y) / 2;
+    const bend = Math.hypot(dx, dy);
+    let lx = 0;
+    let ly = 0;
+    if (bend > 1) {
+      const lines = String(e.data('label')).split('\n');
+      const w = Math.max(...lines.map((l) => l.length)) * 6 + 4;  // font size 10, padding 2
+      const h = lines.length * 11 + 4;
+      const reach = (Math.abs(dx) * w + Math.abs(dy) * h) / (2 * bend);
+      lx = (dx / bend) * reach;
+      ly = (dy / bend) * reach;
+    }
+    if (e.data('lx') !== lx || e.data('ly') !== ly) e.data({ lx, ly });
+  });
 }
 
 function layoutOptions(cy, model) {
@@ -135,6 +171,7 @@ export function renderModel(cy, model, { relayout = false } = {}) {
     layout(cy, model);
   }
   for (const id of selected) cy.getElementById(id).select();
+  placeEdgeLabels(cy.edges());
 }
 
 /// dagre does not keep the order of children: put each node's children left to right in
@@ -158,6 +195,7 @@ export function layout(cy, model) {
   const lay = cy.layout({ ...layoutOptions(cy, model), fit: false });
   lay.run();
   if (model && model.architecture === 'bt') orderTree(cy, model);
+  placeEdgeLabels(cy.edges());
   cy.fit(undefined, cy.scratch('_sdCompact') ? 10 : 30);
   if (cy.zoom() > 1.6) { cy.zoom(1.6); cy.center(); }
 }

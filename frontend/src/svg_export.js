@@ -1,4 +1,6 @@
 // The drawing as an SVG file, built from cytoscape's node boxes and edge geometry.
+import { labelCentre } from './graph.js';
+
 const esc = (s) => String(s).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;');
 
 function textLines(lines, x, y, size, color) {
@@ -33,7 +35,7 @@ export function graphToSvg(cy) {
     }
     const label = e.data('label');
     if (label) {
-      const m = e.midpoint();
+      const m = labelCentre(e);
       const lines = label.split('\n');
       const w = Math.max(...lines.map((x) => x.length)) * 6 + 6;
       const h = lines.length * 12 + 4;
