@@ -80,9 +80,14 @@ void list_near_pairs(SwarmState& swarm, double range) {
     const double x = ws.position_x[a], y = ws.position_y[a];
     std::size_t count = 0;
     grid.for_each_run_near({x, y}, {x, y}, range, [&](int begin, int end) {
+      // Whether a robot of the box is a later one within range is a coin toss for the branch
+      // predictor: each is written, and the count advances only for those kept (a is never
+      // kept, so at most size - 1 are and the write stays within the buffer).
       for (int k = begin; k < end; ++k) {
         const double dx = grid.x()[k] - x, dy = grid.y()[k] - y;
-        if (grid.robot()[k] > a && dx * dx + dy * dy < range_sq) ws.candidates[count++] = grid.robot()[k];
+        const std::uint16_t b = grid.robot()[k];
+        ws.candidates[count] = b;
+        count += (b > a) & (dx * dx + dy * dy < range_sq) ? 1 : 0;
       }
     });
     std::sort(ws.candidates.begin(), ws.candidates.begin() + static_cast<std::ptrdiff_t>(count));
