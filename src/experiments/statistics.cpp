@@ -6,6 +6,7 @@
 #include <boost/math/distributions/students_t.hpp>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <stdexcept>
 
 #include "design/statistics.hpp"
@@ -227,6 +228,15 @@ ExpectedRanks expected_ranks(const std::vector<std::vector<double>>& values, con
   const double alpha = 1 - confidence;
   if (f.p_value < alpha) out.critical_difference = conover_mean_rank_cd(costs, f.rank_sums, alpha);
   return out;
+}
+
+double mean(std::span<const double> x) { return std::accumulate(x.begin(), x.end(), 0.0) / static_cast<double>(x.size()); }
+
+double sample_standard_deviation(std::span<const double> x) {
+  const double m = mean(x);
+  double sum_squares = 0.0;
+  for (const double value : x) sum_squares += (value - m) * (value - m);
+  return std::sqrt(sum_squares / static_cast<double>(x.size() - 1));
 }
 
 WelchTest welch_t_test(std::span<const double> x, std::span<const double> y) {

@@ -63,6 +63,10 @@ struct ExpectedRanks {
 ExpectedRanks expected_ranks(const std::vector<std::vector<double>>& values,
                              const std::vector<bool>& higher_is_better, double confidence = 0.95);
 
+/// R's mean(x) and sd(x) (n - 1 in the denominator). x must hold at least 1 and 2 values.
+double mean(std::span<const double> x);
+double sample_standard_deviation(std::span<const double> x);
+
 struct WelchTest {
   double statistic = 0.0;  // t = (mean(x) - mean(y)) / sqrt(var(x)/nx + var(y)/ny)
   double df = 0.0;         // Welch-Satterthwaite degrees of freedom

@@ -1,0 +1,42 @@
+#pragma once
+// The scores ARGoS3-AutoMoDe gave the project's calibration set (tests/data/argos-reference*.csv,
+// seeds 1-20 per controller), read the same way by the calibration test, which gates on them,
+// and by bench/calibration_wide, which compares them with many more of our seeds.
+#include <string>
+#include <vector>
+
+#include "missions/mission.hpp"
+#include "modules/catalogue.hpp"
+
+namespace sd {
+
+/// One calibration group: the rows of `file` whose mission column is `reference_mission` and
+/// whose architecture column is `architecture` ("" for the first file, which has none).
+struct ArgosReferenceGroup {
+  const char* name;
+  const char* file;
+  const char* reference_mission;
+  const char* architecture;
+  const char* catalogue_mission;
+  double duration_s;    // 0: the catalogue mission's; else ARGoS ran it this long
+  bool exact_ranking;   // the group's controllers must rank exactly as in ARGoS
+};
+
+/// Every group of the calibration set, in the order the README's tables list them.
+const std::vector<ArgosReferenceGroup>& argos_reference_groups();
+
+struct ArgosReferenceController {
+  std::string name;
+  std::string config;  // as ARGoS ran it
+  Flavour legacy_flavour = Flavour::Chocolate;
+  std::vector<double> scores;  // ARGoS' scores, seeds 1, 2, ... in order
+};
+
+/// The group's controllers, by name, from `folder`/group.file. Throws std::runtime_error
+/// naming the file and line when the file is missing or malformed, or seeds are out of order.
+std::vector<ArgosReferenceController> read_argos_reference(const std::string& folder, const ArgosReferenceGroup& group);
+
+/// The catalogue mission of the group, run for as long as ARGoS ran it.
+Mission argos_reference_mission(const ArgosReferenceGroup& group);
+
+}  // namespace sd
