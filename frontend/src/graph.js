@@ -114,6 +114,13 @@ export function createGraph(container, { readOnly = false } = {}) {
   return cy;
 }
 
+/// The box of an edge label (font size 10, about 6 px per character, with its padding): where
+/// the label moves off its curve, and the background SVG export draws under it.
+export function edgeLabelBox(label) {
+  const lines = String(label).split('\n');
+  return { lines, w: Math.max(...lines.map((l) => l.length)) * 6 + 6, h: lines.length * 12 + 4 };
+}
+
 /// Where an edge's label is drawn: the curve's midpoint, moved by the label's margin.
 export function labelCentre(edge) {
   const m = edge.midpoint();
@@ -136,9 +143,7 @@ function placeEdgeLabels(edges) {
     let lx = 0;
     let ly = 0;
     if (bend > 1) {
-      const lines = String(e.data('label')).split('\n');
-      const w = Math.max(...lines.map((l) => l.length)) * 6 + 4;  // font size 10, padding 2
-      const h = lines.length * 11 + 4;
+      const { w, h } = edgeLabelBox(e.data('label'));
       const reach = (Math.abs(dx) * w + Math.abs(dy) * h) / (2 * bend);
       lx = (dx / bend) * reach;
       ly = (dy / bend) * reach;

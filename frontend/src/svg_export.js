@@ -1,5 +1,5 @@
 // The drawing as an SVG file, built from cytoscape's node boxes and edge geometry.
-import { labelCentre } from './graph.js';
+import { edgeLabelBox, labelCentre } from './graph.js';
 
 const esc = (s) => String(s).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;');
 
@@ -36,9 +36,7 @@ export function graphToSvg(cy) {
     const label = e.data('label');
     if (label) {
       const m = labelCentre(e);
-      const lines = label.split('\n');
-      const w = Math.max(...lines.map((x) => x.length)) * 6 + 6;
-      const h = lines.length * 12 + 4;
+      const { lines, w, h } = edgeLabelBox(label);
       parts.push(`<rect x="${m.x - w / 2}" y="${m.y - h / 2}" width="${w}" height="${h}" fill="#fff" fill-opacity="0.9"/>`);
       parts.push(textLines(lines, m.x, m.y, 10, '#7a4d00'));
     }
