@@ -32,9 +32,8 @@ using experiments::sample_standard_deviation;
 
 nlohmann::json compare_group(const ArgosReferenceGroup& group, const std::string& data, int seeds, ThreadedEvaluator& evaluator) {
   const Mission mission = argos_reference_mission(group);
-  std::vector<double> ours_means, argos_means, ratios;
+  ArgosAgreement agreement;
   double stouffer = 0.0, largest = 0.0;
-  int above = 0, below = 0;
   nlohmann::json rows = nlohmann::json::array();
   const std::vector<ArgosReferenceController> refs = read_argos_reference(data, group);
   for (const ArgosReferenceController& ref : refs) {
@@ -48,14 +47,7 @@ nlohmann::json compare_group(const ArgosReferenceGroup& group, const std::string
     const double deviation = spread > 0 ? (ours - theirs) / spread : 0.0;
     stouffer += std::isfinite(t) ? t : 0.0;
     largest = std::max(largest, std::abs(deviation));
-    // Means of the same scores summed in another order may differ in the last bit: a tie (as the
-    // calibration test counts them).
-    const bool tie = std::abs(ours - theirs) <= 1e-9 * std::max(1.0, std::abs(theirs));
-    above += !tie && ours > theirs;
-    below += !tie && ours < theirs;
-    if (theirs != 0) ratios.push_back(ours / theirs);
-    ours_means.push_back(ours);
-    argos_means.push_back(theirs);
+    agreement.add(ours, theirs);
     std::printf("%-18s %-4s argos %10.2f (sd %9.2f)  ours %10.2f (sd %9.2f)  ratio %6.2f  dev %+6.2f sd  t %+6.2f\n", group.name,
                 ref.name.c_str(), theirs, spread, ours, sample_standard_deviation(scores), theirs != 0 ? ours / theirs : NAN, deviation, t);
     std::fflush(stdout);
@@ -64,13 +56,13 @@ nlohmann::json compare_group(const ArgosReferenceGroup& group, const std::string
   }
   const double z = stouffer / std::sqrt(static_cast<double>(refs.size()));
   const double p = std::erfc(std::abs(z) / std::sqrt(2.0));
-  const double rho = experiments::spearman_rho(ours_means, argos_means);
-  const double median_ratio = ratios.empty() ? NAN : experiments::median(ratios);
+  const double rho = experiments::spearman_rho(agreement.ours, agreement.argos);
+  const double median_ratio = agreement.ratios.empty() ? NAN : experiments::median(agreement.ratios);
   std::printf("== %s: %zu controllers, seeds 1-%d: rho %.3f  median ratio %.3f  max |dev| %.2f sd  above %d below %d  "
               "Stouffer z %+.2f (p %.4f)\n",
-              group.name, refs.size(), seeds, rho, median_ratio, largest, above, below, z, p);
+              group.name, refs.size(), seeds, rho, median_ratio, largest, agreement.above, agreement.below, z, p);
   return {{"group", group.name}, {"controllers", refs.size()}, {"spearman_rho", rho}, {"median_ratio", median_ratio},
-          {"max_abs_deviation_sd", largest}, {"above", above}, {"below", below}, {"stouffer_z", z}, {"stouffer_p", p},
+          {"max_abs_deviation_sd", largest}, {"above", agreement.above}, {"below", agreement.below}, {"stouffer_z", z}, {"stouffer_p", p},
           {"rows", rows}};
 }
 

@@ -80,6 +80,15 @@ std::vector<ArgosReferenceController> read_argos_reference(const std::string& fo
   return refs;
 }
 
+void ArgosAgreement::add(double our_mean, double argos_mean) {
+  const bool tie = std::abs(our_mean - argos_mean) <= 1e-9 * std::max(1.0, std::abs(argos_mean));
+  above += !tie && our_mean > argos_mean;
+  below += !tie && our_mean < argos_mean;
+  if (argos_mean != 0) ratios.push_back(our_mean / argos_mean);
+  ours.push_back(our_mean);
+  argos.push_back(argos_mean);
+}
+
 Mission argos_reference_mission(const ArgosReferenceGroup& group) {
   Mission mission = load_mission(group.catalogue_mission);
   if (group.duration_s > 0) {

@@ -36,6 +36,16 @@ struct ArgosReferenceController {
 /// naming the file and line when the file is missing or malformed, or seeds are out of order.
 std::vector<ArgosReferenceController> read_argos_reference(const std::string& folder, const ArgosReferenceGroup& group);
 
+/// A group's means, ours and ARGoS', controller by controller, and how many of ours lie above
+/// and below ARGoS'. Means of the same scores summed in another order may differ in the last
+/// bit, so means that close count as a tie, neither above nor below.
+struct ArgosAgreement {
+  std::vector<double> ours, argos;
+  std::vector<double> ratios;  // ours / ARGoS', where ARGoS' mean is not 0
+  int above = 0, below = 0;
+  void add(double our_mean, double argos_mean);
+};
+
 /// The catalogue mission of the group, run for as long as ARGoS ran it.
 Mission argos_reference_mission(const ArgosReferenceGroup& group);
 

@@ -72,10 +72,9 @@ TEST_P(Calibration, ScoresLikeArgos) {
   ASSERT_GE(refs.size(), 5u);
   const Mission mission = argos_reference_mission(group);
   ThreadedEvaluator evaluator(0);
-  std::vector<double> our_means, argos_means, ratios;
+  ArgosAgreement agreement;
   std::vector<std::string> names;
   double largest_deviation = 0.0, smallest_p = 1.0;
-  int above = 0, below = 0;
   for (const ArgosReferenceController& ref : refs) {
     const std::string& name = ref.name;
     ASSERT_EQ(ref.scores.size(), 20u) << name;
@@ -98,17 +97,14 @@ TEST_P(Calibration, ScoresLikeArgos) {
       if (spread > 0) largest_deviation = std::max(largest_deviation, std::abs(ours - theirs) / spread);
       smallest_p = std::min(smallest_p, p);
     }
-    // Means of the same scores summed in another order may differ in the last bit: a tie.
-    const bool tie = std::abs(ours - theirs) <= 1e-9 * std::max(1.0, std::abs(theirs));
-    above += !tie && ours > theirs;
-    below += !tie && ours < theirs;
-    if (theirs != 0) ratios.push_back(ours / theirs);
-    our_means.push_back(ours);
-    argos_means.push_back(theirs);
+    agreement.add(ours, theirs);
     names.push_back(name);
   }
+  const int above = agreement.above, below = agreement.below;
   const double sign_p = experiments::sign_test_p_value(above, above + below);
   EXPECT_GE(sign_p, 0.01) << above << " controllers above ARGoS' mean, " << below << " below";
+  const std::vector<double>& our_means = agreement.ours;
+  const std::vector<double>& argos_means = agreement.argos;
   const double rho = experiments::spearman_rho(our_means, argos_means);
   if (group.exact_ranking) {
     std::vector<std::size_t> ours(names.size()), theirs(names.size());
@@ -120,7 +116,7 @@ TEST_P(Calibration, ScoresLikeArgos) {
   }
   // max |dev| and min Welch p are over the controllers held to the full gate.
   std::printf("calibration %-18s controllers %2zu  rho %.3f  median ratio %.3f  max |dev| %.2f sd  min Welch p %.4f  above %d below %d (sign p %.3f)\n",
-              group.name, names.size(), rho, experiments::median(ratios), largest_deviation, smallest_p, above, below, sign_p);
+              group.name, names.size(), rho, experiments::median(agreement.ratios), largest_deviation, smallest_p, above, below, sign_p);
 }
 
 INSTANTIATE_TEST_SUITE_P(
