@@ -2,8 +2,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include <fstream>
-#include <sstream>
+#include "core/bounded_file.hpp"
 
 namespace sd::cli {
 
@@ -20,11 +19,13 @@ ControlSoftware read_control_software(const Context& context, const ControlSoftw
   parse.legacy_flavour = *flavour;
   if (!options.config_file.empty()) {
     if (context.has_control_software()) throw UsageError("give the control software either inline or with --config-file, not both");
-    std::ifstream in(options.config_file);
-    if (!in) throw UsageError("--config-file: cannot read " + options.config_file);
-    std::stringstream text;
-    text << in.rdbuf();
-    return parse_control_software(text.str(), parse);
+    std::string text;
+    try {
+      text = read_bounded_file(options.config_file, "configuration file").text;
+    } catch (const FileReadError& e) {
+      throw UsageError(std::string("--config-file: ") + e.what());
+    }
+    return parse_control_software(text, parse);
   }
   if (!context.has_control_software()) throw UsageError("no control software: end the command with --fsm-config ...");
   return parse_control_software(std::span<const std::string>(context.control_software), parse);

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/bounded_file.hpp"
 #include "core/durable_file.hpp"
 #include "evostick/weight_document.hpp"
 
@@ -47,11 +48,9 @@ void write_saved_evolution(const std::filesystem::path& file, const EvolutionTar
 
 SavedEvolution read_saved_evolution(const std::filesystem::path& file) {
   if (!std::filesystem::exists(file)) throw std::runtime_error("there is no EvoStick state file " + file.string());
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error("cannot read " + file.string());
-  std::stringstream text;
-  text << in.rdbuf();
-  const json doc = json::parse(text.str(), nullptr, false);
+  // A population of a thousand networks is under 1 MiB of text; 64 MiB leaves room for any.
+  const std::string text = read_bounded_file(file, "EvoStick state file", std::size_t{64} << 20).text;
+  const json doc = json::parse(text, nullptr, false);
   if (doc.is_discarded() || !doc.is_object() || doc.value("format", "") != kFormat)
     throw std::runtime_error(file.string() + " is not an EvoStick state file (it may be damaged)");
   try {

@@ -6,6 +6,9 @@
 #include <fstream>
 #include <set>
 
+#include "core/bounded_file.hpp"
+#include "core/json_syntax.hpp"
+
 namespace sd::experiments {
 
 namespace {
@@ -199,12 +202,16 @@ nlohmann::json to_json(const Protocol& protocol) {
 }
 
 Protocol read_protocol_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw ProtocolError("cannot read the protocol file " + path);
+  std::string text;
   try {
-    return protocol_from_json(nlohmann::json::parse(in, nullptr, true, /*ignore_comments=*/true));
+    text = read_bounded_file(path, "protocol file").text;
+  } catch (const FileReadError& e) {
+    throw ProtocolError(e.what());
+  }
+  try {
+    return protocol_from_json(nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true));
   } catch (const nlohmann::json::parse_error& e) {
-    throw ProtocolError(path + ": not a JSON document: " + e.what());
+    throw ProtocolError(path + ": not a JSON document: " + json_syntax_error(e, text));
   } catch (const ProtocolError& e) {
     throw ProtocolError(path + ": " + e.what());
   }

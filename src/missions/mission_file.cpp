@@ -4,12 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <functional>
 #include <optional>
 #include <sstream>
 
+#include "core/bounded_file.hpp"
 #include "core/fnv.hpp"
+#include "core/json_syntax.hpp"
 #include "core/math.hpp"
 #include "missions/json_field.hpp"
 #include "missions/mission.hpp"
@@ -283,7 +284,7 @@ Mission parse_mission(const std::string& json_text, const std::string& source) {
   try {
     document = json::parse(json_text, nullptr, true, /*ignore_comments=*/true);
   } catch (const json::parse_error& e) {
-    throw MissionError(std::string("not valid JSON: ") + e.what());
+    throw MissionError("not valid JSON: " + json_syntax_error(e, json_text));
   }
   const Field root(document, "");
   root.only({"name", "title", "origin", "description", "duration", "robots", "arena", "start", "robot", "arrest", "events", "objective", "argos"});
@@ -323,12 +324,14 @@ Mission parse_mission(const std::string& json_text, const std::string& source) {
 }
 
 Mission load_mission_file(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw MissionError("cannot read mission file " + path.string());
-  std::stringstream buffer;
-  buffer << in.rdbuf();
+  std::string text;
   try {
-    return parse_mission(buffer.str(), path.string());
+    text = read_bounded_file(path, "mission file").text;
+  } catch (const FileReadError& e) {
+    throw MissionError(e.what());
+  }
+  try {
+    return parse_mission(text, path.string());
   } catch (const MissionError& e) {
     throw MissionError(path.filename().string() + ": " + e.what());
   }
