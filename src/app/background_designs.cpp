@@ -31,6 +31,7 @@ storage::Design BackgroundDesigns::start(const storage::User& user, const std::s
   request.project = project;
   request.owner = storage::local_owner(0, job_ + "-" + std::to_string(next_job_++)).text();
   Home home(home_);
+  request.files = FileScope::own_projects(home, user);  // a server's user names only their own files
   // Refuses a project whose design still runs (here or in another process) before any change.
   auto design = std::make_shared<ProjectDesign>(start_project_design(home, user, request));
   const std::int64_t project_id = design->project.id;

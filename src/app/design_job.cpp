@@ -4,6 +4,7 @@
 
 #include "app/errors.hpp"
 #include "app/inputs.hpp"
+#include "app/user_files.hpp"
 #include "app/resume_check.hpp"
 #include "app/simulation_runner.hpp"
 #include "control/config_string.hpp"
@@ -57,7 +58,7 @@ design::DesignSpaceChoice resolve_space(const design::DesignSpaceRequest& reques
 
 PreparedDesign check_new_design(const NewDesignSettings& settings) {
   PreparedDesign d;
-  d.mission = load_requested_mission(settings.mission);
+  d.mission = load_requested_mission(settings.mission, settings.files);
   d.mission_reference = mission_reference(settings.mission);
   d.choice = resolve_space(settings.space);
   d.space = std::make_unique<design::ParameterSpace>(design::build_design_space(d.choice));
@@ -75,7 +76,7 @@ PreparedDesign prepare_new_design(const NewDesignSettings& settings, const std::
   return d;
 }
 
-PreparedDesign prepare_resume(const std::filesystem::path& folder, bool allow_finished) {
+PreparedDesign prepare_resume(const std::filesystem::path& folder, bool allow_finished, const FileScope& files) {
   PreparedDesign d;
   d.folder = std::filesystem::absolute(folder).lexically_normal();
   d.resuming = true;
@@ -83,7 +84,7 @@ PreparedDesign prepare_resume(const std::filesystem::path& folder, bool allow_fi
   const storage::DesignMeta& meta = store.meta();
   d.mission_reference = meta.mission;
   ResumeCheck check =
-      check_resumable("the design in " + d.folder.string(), meta.mission, meta.mission_digest, meta.results_version);
+      check_resumable("the design in " + d.folder.string(), meta.mission, meta.mission_digest, meta.results_version, files);
   if (!check.refusal.empty()) throw DesignFolderError(check.refusal);
   d.mission = std::move(check.mission);
   try {

@@ -22,6 +22,7 @@
 #include "design/design_space.hpp"
 #include "design/iterated_race.hpp"
 #include "evaluation/evaluator.hpp"
+#include "app/user_files.hpp"
 #include "missions/mission.hpp"
 
 namespace sd::app {
@@ -31,6 +32,7 @@ struct NewDesignSettings {
   long long budget = 0;
   design::DesignSpaceRequest space;
   std::uint64_t seed = 0;
+  FileScope files = FileScope::local();  // where the mission file may be (a server: the user's projects)
 };
 
 struct PreparedDesign {
@@ -53,7 +55,8 @@ PreparedDesign prepare_new_design(const NewDesignSettings& settings, const std::
 /// DesignFolderError for a folder that is not a design, of another format or space, damaged,
 /// whose mission changed or whose runs this build would score differently, or (unless
 /// allow_finished) finished.
-PreparedDesign prepare_resume(const std::filesystem::path& folder, bool allow_finished = false);
+PreparedDesign prepare_resume(const std::filesystem::path& folder, bool allow_finished = false,
+                              const FileScope& files = FileScope::local());
 
 struct EliteReport {
   int id = 0;

@@ -5,6 +5,7 @@
 
 #include "app/errors.hpp"
 #include "app/inputs.hpp"
+#include "app/user_files.hpp"
 #include "app/resume_check.hpp"
 #include "control/config_string.hpp"
 #include "evaluation/evaluator.hpp"

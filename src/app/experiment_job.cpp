@@ -10,6 +10,7 @@
 #include "app/evaluation_job.hpp"
 #include "app/evolution_job.hpp"
 #include "app/inputs.hpp"
+#include "app/user_files.hpp"
 #include "app/lease_keeper.hpp"
 #include "app/projects.hpp"
 #include "control/config_string.hpp"

@@ -5,6 +5,7 @@
 
 #include "app/errors.hpp"
 #include "app/inputs.hpp"
+#include "app/user_files.hpp"
 #include "core/durable_file.hpp"
 
 namespace sd::app {

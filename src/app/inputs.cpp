@@ -3,7 +3,6 @@
 #include <random>
 
 #include "app/errors.hpp"
-#include "missions/catalogue.hpp"
 #include "storage/validation.hpp"
 
 namespace sd::app {
@@ -39,14 +38,6 @@ std::vector<std::uint64_t> parse_seed_range(const std::string& text) {
   std::vector<std::uint64_t> seeds;
   for (std::uint64_t s = a; s <= b; ++s) seeds.push_back(s);
   return seeds;
-}
-
-Mission load_requested_mission(const std::string& name_or_path) {
-  try {
-    return load_mission(name_or_path);
-  } catch (const MissionError& e) {
-    throw InvalidRequest(e.what());
-  }
 }
 
 std::uint64_t random_seed() {

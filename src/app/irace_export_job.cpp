@@ -2,6 +2,7 @@
 
 #include "app/design_job.hpp"
 #include "app/inputs.hpp"
+#include "app/user_files.hpp"
 #include "design/irace_export.hpp"
 #include "missions/catalogue.hpp"
 

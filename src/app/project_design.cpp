@@ -37,10 +37,10 @@ ProjectDesign start_project_design(Home& home, const storage::User& user, const 
     PreparedDesign prepared;
     try {
       prepared = std::filesystem::exists(storage::DesignStore::file_in(latest->folder))
-                     ? prepare_resume(latest->folder, true)
+                     ? prepare_resume(latest->folder, true, request.files)
                      : prepare_new_design({latest->mission, latest->budget,
                                            design::request_from_text(latest->architectures, latest->flavours),
-                                           latest->seed},
+                                           latest->seed, request.files},
                                           latest->folder);  // killed before its first checkpoint
     } catch (const std::exception& e) {
       throw DesignFolderError("design " + std::to_string(latest->id) + " of " + project.name +
@@ -54,7 +54,7 @@ ProjectDesign start_project_design(Home& home, const storage::User& user, const 
   const std::uint64_t seed = request.seed ? *request.seed : random_seed();
   std::optional<PreparedDesign> checked;
   if (project.mission && project.budget)  // else Designs::start says what is missing
-    checked = check_new_design({*project.mission, *project.budget, request.space, seed});
+    checked = check_new_design({*project.mission, *project.budget, request.space, seed, request.files});
   const design::DesignSpaceChoice choice = checked ? checked->choice : resolve_space(request.space);
   std::optional<storage::Design> abandoned;
   if (checked && latest && latest->state == storage::DesignState::interrupted && request.fresh) {

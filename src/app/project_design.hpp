@@ -28,6 +28,7 @@ struct ProjectDesignRequest {
   bool fresh = false;                 // give up an interrupted design instead of resuming it
   std::string owner;                  // storage::Owner::text() of the job that will run it
   std::optional<std::string> project; // a project by name (a server); nullopt: the active one
+  FileScope files = FileScope::local(); // where its mission file may be (a server: the user's projects)
 };
 
 struct ProjectDesign {

@@ -2,6 +2,7 @@
 
 #include "app/errors.hpp"
 #include "app/inputs.hpp"
+#include "app/user_files.hpp"
 #include "missions/catalogue.hpp"
 #include "storage/validation.hpp"
 
@@ -50,10 +51,11 @@ storage::Project set_budget(Home& home, const storage::User& user, const std::st
 }
 
 storage::Project create_configured_project(Home& home, const storage::User& user, const std::string& name,
-                                           const std::string& mission, const std::string& budget) {
+                                           const std::string& mission, const std::string& budget,
+                                           const FileScope& files) {
   require(storage::project_name_problem(name));
   if (mission.empty()) throw InvalidRequest("no mission chosen");
-  load_requested_mission(mission);
+  load_requested_mission(mission, files);
   const long long runs = parse_budget(budget);
   storage::Projects projects(home.workspace(), user);
   projects.create(name, std::nullopt);
@@ -67,8 +69,8 @@ storage::Project set_mission(Home& home, const storage::User& user, const std::s
   storage::Projects projects(home.workspace(), user);
   projects.require_active();
   try {
-    load_mission(mission);
-  } catch (const MissionError& e) {
+    load_requested_mission(mission);
+  } catch (const InvalidRequest& e) {
     throw InvalidRequest(std::string(e.what()) + "; run set-mission without a name to choose from the list");
   }
   return projects.set_mission(mission_reference(mission));

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/home.hpp"
+#include "app/user_files.hpp"
 #include "storage/projects.hpp"
 
 namespace sd::app {
@@ -35,9 +36,11 @@ storage::Project set_mission(Home& home, const storage::User& user, const std::s
 
 /// A project ready to design in one step (a server's "new project"): name, mission and budget
 /// are all checked before anything is written, so a refusal leaves no half-made project. It
-/// becomes the active project, as new-project and select-project make it.
+/// becomes the active project, as new-project and select-project make it. The mission file, if
+/// one is named, must be one `files` lets the user read.
 storage::Project create_configured_project(Home& home, const storage::User& user, const std::string& name,
-                                           const std::string& mission, const std::string& budget);
+                                           const std::string& mission, const std::string& budget,
+                                           const FileScope& files);
 
 /// Changes where the active cluster project's jobs go, or which swarmdesign runs them ("" keeps
 /// one); InvalidRequest for a local project or a path that cannot go into a job script.

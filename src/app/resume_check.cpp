@@ -1,5 +1,6 @@
 #include "app/resume_check.hpp"
 
+#include "app/errors.hpp"
 #include "evaluation/results_version.hpp"
 
 namespace sd::app {
@@ -12,11 +13,12 @@ std::string results_version_refusal(const std::string& what, int stored_results_
 }
 
 ResumeCheck check_resumable(const std::string& what, const std::string& mission_reference,
-                            const std::string& stored_digest, int stored_results_version) {
+                            const std::string& stored_digest, int stored_results_version,
+                            const FileScope& files) {
   ResumeCheck check;
   try {
-    check.mission = load_mission(mission_reference);
-  } catch (const MissionError& e) {
+    check.mission = load_requested_mission(mission_reference, files);
+  } catch (const std::exception& e) {  // the mission's own error, or the file rule's refusal
     check.refusal = "the mission of " + what + " cannot be loaded: " + e.what();
     return check;
   }

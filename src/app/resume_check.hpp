@@ -4,6 +4,7 @@
 // population would mix runs of two missions or two simulators.
 #include <string>
 
+#include "app/user_files.hpp"
 #include "missions/catalogue.hpp"
 
 namespace sd::app {
@@ -20,6 +21,7 @@ std::string results_version_refusal(const std::string& what, int stored_results_
 /// The mission check, then the results version's. An empty `stored_digest` (kept before
 /// digests were) skips the mission check.
 ResumeCheck check_resumable(const std::string& what, const std::string& mission_reference,
-                            const std::string& stored_digest, int stored_results_version);
+                            const std::string& stored_digest, int stored_results_version,
+                            const FileScope& files = FileScope::local());
 
 }  // namespace sd::app

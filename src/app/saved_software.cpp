@@ -2,11 +2,10 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <regex>
 
 #include "app/errors.hpp"
+#include "app/user_files.hpp"
 #include "control/config_string.hpp"
 #include "core/durable_file.hpp"
 #include "storage/projects.hpp"
@@ -25,10 +24,16 @@ std::vector<SavedSoftware> list_saved_software(Home& home, const storage::User& 
   const auto folder = folder_of(home, user, project);
   std::vector<SavedSoftware> list;
   if (!std::filesystem::is_directory(folder)) return list;
+  // Every file is read under the rule for a user's own files: a link planted in the folder
+  // that leads out of the user's projects, a device or a huge file is passed over, unread.
+  const FileScope scope = FileScope::own_projects(home, user);
   for (const auto& entry : std::filesystem::directory_iterator(folder)) {
     if (entry.path().extension() != ".txt") continue;
-    std::ifstream in(entry.path());
-    list.push_back({entry.path().stem().string(), std::string(std::istreambuf_iterator<char>(in), {})});
+    try {
+      list.push_back({entry.path().stem().string(), scope.read(entry.path().string(), "saved control software")});
+    } catch (const std::exception&) {
+      continue;
+    }
   }
   std::sort(list.begin(), list.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
   return list;
@@ -40,8 +45,8 @@ SavedSoftware save_software(Home& home, const storage::User& user, const std::st
   if (!std::regex_match(name, rule))
     throw InvalidRequest("name '" + name + "' must be 1-64 letters, digits, '.', '_' or '-', not starting with '.'");
   SavedSoftware saved{name, to_config_string(parse_control_software(text))};
-  const auto folder = folder_of(home, user, project);
-  std::filesystem::create_directories(folder);
+  const auto folder = FileScope::own_projects(home, user).writable_folder(folder_of(home, user, project),
+                                                                          "the folder of saved control software");
   replace_file_durably(folder / (name + ".txt"), saved.text, 0644, Umask::Applies);
   return saved;
 }

@@ -9,6 +9,7 @@
 #include "app/documents.hpp"
 #include "app/evaluation_job.hpp"
 #include "app/inputs.hpp"
+#include "app/user_files.hpp"
 #include "cli/command_registry.hpp"
 #include "cli/control_software_input.hpp"
 #include "cli/score_output.hpp"

@@ -13,7 +13,7 @@ void add_mission_routes(Routes& routes) {
     for (const MissionSummary& m : list_missions()) list.push_back(app::mission_document(load_mission(m.name)));
     for (const std::string& file : project_mission_files(call.home, call.user)) {
       try {
-        nlohmann::json doc = app::mission_document(load_mission(file));
+        nlohmann::json doc = app::mission_document(load_user_mission(call.home, call.user, file));
         doc["name"] = file;  // what POST /api/runs takes
         list.push_back(std::move(doc));
       } catch (const std::exception&) {

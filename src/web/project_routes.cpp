@@ -49,7 +49,8 @@ void add_project_routes(Routes& routes) {
   routes.post("/api/projects", [](Call& call) {
     return app::project_document(app::create_configured_project(call.home, call.user, text_field(call.body, "name"),
                                                                 text_field(call.body, "mission"),
-                                                                text_field(call.body, "budget")));
+                                                                text_field(call.body, "budget"),
+                                                                app::FileScope::own_projects(call.home, call.user)));
   });
 
   routes.get(project + "/status", [](Call& call) {

@@ -56,9 +56,12 @@ class WebServer : public ::testing::Test {
     std::filesystem::remove_all(root_);
   }
 
-  /// Alice's project on a 10-second AAC (a mission file of her own) with a small budget.
+  /// Alice's project on a 10-second AAC (a mission file of her own, put in the project's folder
+  /// before the project is made, as a user of the server would) with a small budget.
   void alice_project(const std::string& name, const std::string& budget = "300") {
-    const auto mission = write_short_mission(root_);
+    const auto folder = root_ / "home" / "users" / "alice" / "projects" / name;
+    std::filesystem::create_directories(folder);
+    const auto mission = write_short_mission(folder);
     const Answer a = alice_->post("/api/projects", {{"name", name}, {"mission", mission.string()}, {"budget", budget}});
     ASSERT_EQ(a.status, 200) << a.text;
   }
@@ -214,12 +217,13 @@ TEST_F(WebServer, BadInputGetsAClearErrorAndTheServerGoesOn) {
   EXPECT_EQ(alice_->post("/api/runs", {{"text", kFsm}, {"mission", "aac"}, {"seed", -4}}).status, 400);
   EXPECT_EQ(alice_->post("/api/runs", {{"text", kFsm}, {"mission", "/etc/passwd"}, {"seed", 1}}).status, 404);
   // A malformed mission file of her own project is refused when the project is made.
-  std::filesystem::create_directories(root_ / "missions");
-  std::ofstream(root_ / "missions" / "broken.json") << R"({"name": "broken", "duration": -3})";
-  const Answer broken =
-      alice_->post("/api/projects", {{"name", "p"}, {"mission", (root_ / "missions" / "broken.json").string()}, {"budget", "300"}});
+  const auto own = root_ / "home" / "users" / "alice" / "projects" / "p";
+  std::filesystem::create_directories(own);
+  std::ofstream(own / "broken.json") << R"({"name": "broken", "duration": -3})";
+  const Answer broken = alice_->post("/api/projects", {{"name", "p"}, {"mission", (own / "broken.json").string()}, {"budget", "300"}});
   EXPECT_EQ(broken.status, 400) << broken.text;
   EXPECT_TRUE(alice_->get("/api/projects").body.empty()) << "a refused project must leave nothing behind";
+  std::filesystem::remove_all(own);
   EXPECT_EQ(alice_->post("/api/projects", {{"name", "p"}, {"mission", "aac"}, {"budget", "ten"}}).status, 400);
   EXPECT_EQ(alice_->post("/api/print", {{"software", {{"architecture", "fsm"}, {"states", json::array()}}}}).status, 400);
   EXPECT_EQ(alice_->post("/api/print", {{"software", {{"architecture", "fsm"},
@@ -338,7 +342,7 @@ TEST_F(WebServer, ADesignStartedFromThePageIsFollowedStoppedAndResumed) {
 }
 
 TEST_F(WebServer, ASecondServerCannotTakeAPortAlreadyServed) {
-  web::WebServer second({"127.0.0.1", server_->port(), {}, root_ / "home"});
+  web::WebServer second({"127.0.0.1", server_->port(), {}, root_ / "home", {}, {}});
   EXPECT_THROW(second.bind(), std::runtime_error);
   EXPECT_EQ(alice_->get("/api/session").status, 200);
 }

@@ -1,0 +1,82 @@
+#include "app/user_files.hpp"
+
+#include <algorithm>
+
+#include "app/errors.hpp"
+#include "core/bounded_file.hpp"
+#include "missions/catalogue.hpp"
+#include "storage/workspace.hpp"
+
+namespace sd::app {
+
+namespace {
+
+/// A catalogue name is a word: no separator, no control character (a NUL would cut the file
+/// name the catalogue looks up short), nothing longer than a name.
+bool is_catalogue_word(const std::string& name) {
+  return !name.empty() && name.size() <= 128 && name.front() != '.' &&
+         std::all_of(name.begin(), name.end(), [](char c) { return static_cast<unsigned char>(c) > 0x20 && c != 0x7f; });
+}
+
+}  // namespace
+
+FileScope FileScope::own_projects(const Home& home, const storage::User& user) {
+  // weakly: a user without a project has no folder yet, and so can name no file.
+  return FileScope(std::filesystem::weakly_canonical(home.folder() / storage::Workspace::projects_folder(user)));
+}
+
+bool FileScope::allows(const std::filesystem::path& path) const {
+  if (!root_) return true;
+  if (!path.is_absolute()) return false;  // relative to what? A server's folder is none of the user's business.
+  std::error_code ec;
+  const auto real = std::filesystem::canonical(path, ec);
+  return !ec && is_within(real, *root_);
+}
+
+void FileScope::refuse(const std::string& path, const std::string& what) const {
+  throw NotFound(what + " " + path +
+                 " is not a file of your projects (here you may name the catalogue's missions and files inside "
+                 "your own projects)");
+}
+
+std::string FileScope::read(const std::string& path, const std::string& what) const {
+  // Asked before anything is opened, so nothing outside is even touched; asked again of what
+  // was opened, so a link swapped in meanwhile is caught.
+  if (!allows(path)) refuse(path, what);
+  try {
+    if (!root_) return read_bounded_file(path, what).text;
+    return read_bounded_file(path, what, kMaxInputFileBytes,
+                             [this](const std::filesystem::path& real) { return is_within(real, *root_); })
+        .text;
+  } catch (const FileReadError& e) {
+    if (root_ && (e.problem == FileProblem::Missing || e.problem == FileProblem::Outside)) refuse(path, what);
+    throw InvalidRequest(e.what());
+  }
+}
+
+std::filesystem::path FileScope::writable_folder(const std::filesystem::path& path, const std::string& what) const {
+  std::filesystem::create_directories(path);
+  if (!allows(path)) refuse(path.string(), what);
+  return std::filesystem::canonical(path);
+}
+
+Mission load_requested_mission(const std::string& name_or_path, const FileScope& scope) {
+  try {
+    if (!is_mission_file(name_or_path)) {
+      if (!is_catalogue_word(name_or_path))
+        throw InvalidRequest("unknown mission '" + name_or_path + "' (see `swarmdesign missions`)");
+      return load_mission(name_or_path);
+    }
+    if (scope.is_local()) return load_mission_file(name_or_path);
+    const std::string text = scope.read(name_or_path, "mission file");
+    try {
+      return parse_mission(text, name_or_path);
+    } catch (const MissionError& e) {
+      throw MissionError(std::filesystem::path(name_or_path).filename().string() + ": " + e.what());
+    }
+  } catch (const MissionError& e) {
+    throw InvalidRequest(e.what());
+  }
+}
+
+}  // namespace sd::app
