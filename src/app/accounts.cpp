@@ -13,6 +13,27 @@ namespace {
 void require_valid_user_name(const std::string& name) {
   if (auto problem = storage::user_name_problem(name); !problem.empty()) throw InvalidRequest(problem);
 }
+
+/// The one sign-in check of every front end: a locked name is refused before its password is
+/// even looked at; a failure is counted, a success clears the count.
+storage::User authenticate_counted(Home& home, const std::string& name, const std::string& password,
+                                   const storage::SignInPolicy& policy) {
+  require_valid_user_name(name);
+  storage::Database& db = home.workspace().database();
+  storage::SignInAttempts attempts(db, policy);
+  if (const std::int64_t wait = attempts.locked_for(name, storage::unix_now()); wait > 0)
+    throw storage::TooManyAttempts("too many failed sign-ins for '" + name + "': try again in " +
+                                       std::to_string(wait) + " s",
+                                   wait);
+  try {
+    const storage::User user = storage::authenticate(db, name, password);
+    attempts.succeeded(name);
+    return user;
+  } catch (const AccessDenied&) {
+    attempts.failed(name, storage::unix_now());
+    throw;
+  }
+}
 }  // namespace
 
 void check_new_user_name(Home& home, const std::string& name) {
@@ -27,10 +48,10 @@ storage::User sign_up(Home& home, const std::string& name, const std::string& pa
   return storage::create_user(home.workspace().database(), name, password);
 }
 
-SignedIn sign_in_here(Home& home, const std::string& name, const std::string& password) {
-  require_valid_user_name(name);
+SignedIn sign_in_here(Home& home, const std::string& name, const std::string& password,
+                      const storage::SignInPolicy& policy) {
   storage::Workspace& ws = home.workspace();
-  const auto user = storage::authenticate(ws.database(), name, password);
+  const auto user = authenticate_counted(home, name, password, policy);
   // The session this replaces, if any, is ended once the new one is in place.
   std::optional<std::string> previous;
   try {
@@ -78,9 +99,9 @@ UserList list_users(Home& home) {
   return list;
 }
 
-std::string open_session(Home& home, const std::string& name, const std::string& password) {
-  require_valid_user_name(name);
-  const auto user = storage::authenticate(home.workspace().database(), name, password);
+std::string open_session(Home& home, const std::string& name, const std::string& password,
+                         const storage::SignInPolicy& policy) {
+  const auto user = authenticate_counted(home, name, password, policy);
   return storage::start_session(home.workspace().database(), user).token;
 }
 

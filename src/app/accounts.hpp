@@ -9,6 +9,7 @@
 
 #include "app/home.hpp"
 #include "storage/accounts.hpp"
+#include "storage/sign_in_attempts.hpp"
 
 namespace sd::app {
 
@@ -23,8 +24,10 @@ struct SignedIn {
   std::int64_t expires_at = 0;
 };
 /// Signs in on this machine: a new session whose token replaces the session file (the session
-/// it replaces is ended). AccessDenied for a wrong name or password.
-SignedIn sign_in_here(Home& home, const std::string& name, const std::string& password);
+/// it replaces is ended). AccessDenied for a wrong name or password (the same words for both),
+/// TooManyAttempts while the name is locked out after repeated failures (`policy`).
+SignedIn sign_in_here(Home& home, const std::string& name, const std::string& password,
+                      const storage::SignInPolicy& policy = {});
 
 struct SignedOut {
   bool was_signed_in = false;
@@ -42,9 +45,11 @@ struct UserList {
 };
 UserList list_users(Home& home);
 
-/// For a server: a session for these credentials (token to keep in a cookie), and the user of
-/// a token (AccessDenied when unknown or expired).
-std::string open_session(Home& home, const std::string& name, const std::string& password);
+/// For a server: a session for these credentials (token to keep in a cookie), with
+/// sign_in_here's errors and lock-out; and the user of a token (AccessDenied when unknown or
+/// expired).
+std::string open_session(Home& home, const std::string& name, const std::string& password,
+                         const storage::SignInPolicy& policy = {});
 storage::User user_of_session(Home& home, const std::string& token);
 void close_session(Home& home, const std::string& token);
 

@@ -14,6 +14,7 @@ ErrorKind classify(const std::exception& error) {
   if (dynamic_cast<const NotFound*>(&error)) return ErrorKind::NotFound;
   if (dynamic_cast<const Conflict*>(&error)) return ErrorKind::Conflict;
   if (dynamic_cast<const AccessDenied*>(&error)) return ErrorKind::AccessDenied;
+  if (dynamic_cast<const TooManyAttempts*>(&error)) return ErrorKind::TooManyAttempts;
   if (dynamic_cast<const DesignFolderError*>(&error)) return ErrorKind::Refused;
   return ErrorKind::Failed;
 }

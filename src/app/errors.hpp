@@ -31,8 +31,9 @@ using storage::AccessDenied;
 using storage::Conflict;
 using storage::DesignFolderError;
 using storage::NotFound;
+using storage::TooManyAttempts;
 
-enum class ErrorKind { InvalidRequest, NotFound, Conflict, AccessDenied, Refused, Failed };
+enum class ErrorKind { InvalidRequest, NotFound, Conflict, AccessDenied, Refused, TooManyAttempts, Failed };
 
 /// The kind of an error thrown by a job (anything unknown is Failed).
 ErrorKind classify(const std::exception& error);

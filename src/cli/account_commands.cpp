@@ -172,7 +172,8 @@ CommandRegistrar registrar{10, [](CLI::App& app, Context&) {
   sign_in_command->add_option("USER", options->user, "user name")->required();
   sign_in_command->add_flag("--password-stdin", options->password_stdin, "read the password from standard input");
   sign_in_command->footer(kPasswordHelp + " A session lasts 7 days (or until `swarmdesign exit`); its token is kept in "
-                          "$SWARMDESIGN_HOME/session, readable only by you.\n\nExample:\n  swarmdesign sign-in alice");
+                          "$SWARMDESIGN_HOME/session, readable only by you. Five wrong passwords in a row lock the name for "
+                          "a minute (here and in the web app).\n\nExample:\n  swarmdesign sign-in alice");
   sign_in_command->callback([options] { sign_in(*options); });
 
   auto* exit_command = app.add_subcommand("exit", "Sign out: end the session and delete its token");

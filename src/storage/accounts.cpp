@@ -53,9 +53,8 @@ User create_user(Database& db, std::string_view name, std::string_view password)
 
 User authenticate(Database& db, std::string_view name, std::string_view password) {
   auto stored = find_user(db, name);
-  if (!stored) throw NotFound("no user named " + in_quotes(name) + "; create one with: swarmdesign sign-up " + std::string(name));
-  if (!verify_password(stored->password_hash, password))
-    throw AccessDenied("wrong password for user " + in_quotes(stored->user.name));
+  const bool right = verify_password(stored ? stored->password_hash : dummy_password_hash(), password);
+  if (!stored || !right) throw AccessDenied("wrong user name or password");
   if (password_needs_rehash(stored->password_hash)) {
     Transaction transaction(db);
     db.prepare("UPDATE users SET password_hash = ? WHERE id = ?").bind(1, hash_password(password)).bind(2, stored->user.id).run();

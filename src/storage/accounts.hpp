@@ -20,8 +20,10 @@ bool user_exists(Database& db, std::string_view name);
 /// Creates an account; Conflict if the name is taken (names are case-insensitive).
 User create_user(Database& db, std::string_view name, std::string_view password);
 
-/// The account if the password is right; NotFound for an unknown user, AccessDenied for a
-/// wrong password. Re-hashes an old-limits hash on success.
+/// The account if the password is right; AccessDenied with the same words for an unknown name
+/// and a wrong password, after the same work (an unknown name is checked against a dummy
+/// Argon2id hash), so neither the answer nor its time tells which names exist. Re-hashes an
+/// old-limits hash on success.
 User authenticate(Database& db, std::string_view name, std::string_view password);
 
 std::vector<User> list_users(Database& db);

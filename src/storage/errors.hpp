@@ -2,6 +2,7 @@
 // Why a request on the stored state was refused. All are failures of the work (exit 1 on
 // the command line); misuse is caught earlier by the rules in validation.hpp.
 #include <stdexcept>
+#include <string>
 
 namespace sd::storage {
 
@@ -18,6 +19,12 @@ struct Conflict : std::runtime_error {
 /// Wrong password, not signed in, expired session.
 struct AccessDenied : std::runtime_error {
   using std::runtime_error::runtime_error;
+};
+
+/// Too many failed sign-ins: the name (or the client) must wait.
+struct TooManyAttempts : std::runtime_error {
+  TooManyAttempts(const std::string& message, long long seconds) : std::runtime_error(message), retry_after(seconds) {}
+  long long retry_after;  // seconds
 };
 
 /// A value that the validation rules refuse reached a store.

@@ -49,6 +49,16 @@ bool verify_password(const std::string& hash, std::string_view password) {
   return crypto_pwhash_str_verify(hash.c_str(), password.data(), password.size()) == 0;
 }
 
+const std::string& dummy_password_hash() {
+  static const std::string hash = [] {
+    ensure_sodium();
+    unsigned char random[32];
+    randombytes_buf(random, sizeof random);
+    return hash_password(std::string_view(reinterpret_cast<const char*>(random), sizeof random));
+  }();
+  return hash;
+}
+
 void wipe(std::string& secret) {
   sodium_memzero(secret.data(), secret.size());
   secret.clear();

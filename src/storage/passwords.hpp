@@ -20,6 +20,10 @@ std::string hash_password(std::string_view password);
 /// Constant-time check of a password against a stored hash.
 bool verify_password(const std::string& hash, std::string_view password);
 
+/// A hash of a random password under this build's limits, made once per process: checking a
+/// password against it costs what checking a real one costs (for a name that has no account).
+const std::string& dummy_password_hash();
+
 /// Overwrites a password in memory once it is no longer needed.
 void wipe(std::string& secret);
 

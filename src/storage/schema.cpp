@@ -190,6 +190,16 @@ CREATE TABLE cluster_array_jobs (
   checked_at    INTEGER
 );
 )sql",
+    // 6: failed sign-ins, counted per name as typed (lower case), known or not, so that a lock-out
+    // tells no name apart; shared by the CLI and every server of the home.
+    R"sql(
+CREATE TABLE sign_in_failures (
+  name         TEXT    PRIMARY KEY,       -- lower case
+  failures     INTEGER NOT NULL CHECK (failures > 0),  -- in a row, since the last success or lock-out
+  last_failure INTEGER NOT NULL,
+  locked_until INTEGER NOT NULL DEFAULT 0
+);
+)sql",
 };
 
 }  // namespace

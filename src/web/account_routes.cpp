@@ -12,14 +12,19 @@ namespace sd::web {
 void add_account_routes(Routes& routes) {
   routes.post_public("/api/sign-in", [](Call& call) {
     const std::string name = text_field(call.body, "name");
+    const std::string& address = call.request.remote_addr;
+    if (const std::int64_t wait = call.context.addresses.locked_for(address); wait > 0)
+      throw storage::TooManyAttempts("too many failed sign-ins from your address: try again in " +
+                                         std::to_string(wait) + " s",
+                                     wait);
     std::string token;
     try {
-      token = app::open_session(call.home, name, text_field(call.body, "password"));
-    } catch (const storage::AccessDenied&) {  // the same words for an unknown name: no user list for guessers
-      throw HttpError(401, "wrong user name or password");
-    } catch (const storage::NotFound&) {
+      token = app::open_session(call.home, name, text_field(call.body, "password"), call.context.sign_in);
+    } catch (const storage::AccessDenied&) {  // the same words and work for an unknown name
+      call.context.addresses.failed(address);
       throw HttpError(401, "wrong user name or password");
     }
+    call.context.addresses.succeeded(address);
     call.response.set_header("Set-Cookie", SessionGuard::session_cookie(
                                                token, static_cast<long>(storage::kSessionLifetime.count())));
     send_json(call.response, {{"user", name}, {"csrf", call.context.guard.csrf_token(token)}});

@@ -2,6 +2,8 @@
 
 #include <iostream>
 
+#include "core/json_syntax.hpp"
+
 namespace sd::web {
 
 int http_status(app::ErrorKind kind) {
@@ -11,6 +13,7 @@ int http_status(app::ErrorKind kind) {
     case app::ErrorKind::Conflict: return 409;
     case app::ErrorKind::AccessDenied: return 403;
     case app::ErrorKind::Refused: return 409;
+    case app::ErrorKind::TooManyAttempts: return 429;
     case app::ErrorKind::Failed: return 500;
   }
   return 500;
@@ -18,10 +21,11 @@ int http_status(app::ErrorKind kind) {
 
 nlohmann::json read_json_body(const httplib::Request& request) {
   nlohmann::json body;
+  const std::string& text = request.body.empty() ? std::string("{}") : request.body;
   try {
-    body = nlohmann::json::parse(request.body.empty() ? std::string("{}") : request.body);
+    body = nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
-    throw app::InvalidRequest(std::string("the request body is not JSON: ") + e.what());
+    throw app::InvalidRequest("the request body is not JSON: " + json_syntax_error(e, text));
   }
   if (!body.is_object()) throw app::InvalidRequest("the request body must be a JSON object");
   return body;
@@ -46,6 +50,8 @@ void send_error(httplib::Response& response, const std::exception& error) {
     send_json(response, {{"error", http->what()}}, http->status);
     return;
   }
+  if (const auto* wait = dynamic_cast<const storage::TooManyAttempts*>(&error))
+    response.set_header("Retry-After", std::to_string(wait->retry_after));
   const app::ErrorKind kind = app::classify(error);
   if (kind == app::ErrorKind::Failed) {
     std::cerr << "run-exp: request failed: " << error.what() << "\n";

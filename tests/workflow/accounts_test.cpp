@@ -63,6 +63,24 @@ TEST_F(workflow_accounts, SignInWritesAPrivateTokenWhoseHashAloneIsStored) {
   EXPECT_EQ(lifetime, 7 * 24 * 3600);
 }
 
+TEST_F(workflow_accounts, FiveWrongPasswordsLockTheNameKnownOrNotUntilTheLockOutEnds) {
+  sign_up("alice", "correct horse battery");
+  for (const std::string name : {"alice", "nobody"}) {
+    for (int i = 0; i < 5; ++i)
+      expect_error(run({"sign-in", name, "--password-stdin"}, "wrong password\n"), 1, "wrong user name or password");
+    // Locked: even the right password waits, and the words tell no name apart.
+    expect_error(run({"sign-in", name, "--password-stdin"}, "correct horse battery\n"), 1,
+                 "too many failed sign-ins for '" + name + "': try again in ");
+  }
+  EXPECT_FALSE(std::filesystem::exists(home() / "session"));
+  // The lock-out over (its end moved to the past rather than waiting a minute), the right
+  // password works again and starts the count anew.
+  storage::Database(database(), false).execute("UPDATE sign_in_failures SET locked_until = 1");
+  EXPECT_NE(run_ok({"sign-in", "alice", "--password-stdin"}, "correct horse battery\n").find("Signed in as alice"),
+            std::string::npos);
+  EXPECT_EQ(query("SELECT count(*) FROM sign_in_failures WHERE name = 'alice'"), "0");
+}
+
 TEST_F(workflow_accounts, SigningInAgainReplacesTheSession) {
   sign_up("alice", "correct horse battery");
   sign_in("alice", "correct horse battery");

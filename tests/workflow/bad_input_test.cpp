@@ -1,6 +1,9 @@
 // Every kind of bad input gets one clear error line, the contract's exit status (2 misuse,
 // 1 refused work) and leaves the database, the files and the session exactly as they were.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <fstream>
 
 #include "workflow/workflow_fixture.hpp"
 
@@ -42,9 +45,9 @@ class workflow_bad_input : public WorkflowTest {
 TEST_F(workflow_bad_input, AccountsRefuseWrongPasswordsUnknownUsersDuplicatesAndWeakPasswords) {
   alice_and_bob();
   expect_all_refused({
-      {{"sign-in", "alice", "--password-stdin"}, "not her password\n", 1, "wrong password for user 'alice'"},
-      {{"sign-in", "bob", "--password-stdin"}, "\n", 1, "wrong password"},
-      {{"sign-in", "nobody", "--password-stdin"}, "whatever password\n", 1, "no user named 'nobody'"},
+      {{"sign-in", "alice", "--password-stdin"}, "not her password\n", 1, "wrong user name or password"},
+      {{"sign-in", "bob", "--password-stdin"}, "\n", 1, "wrong user name or password"},
+      {{"sign-in", "nobody", "--password-stdin"}, "whatever password\n", 1, "wrong user name or password"},
       {{"sign-up", "alice", "--password-stdin"}, "a fine password\n", 1, "user name 'alice' is already taken"},
       {{"sign-up", "ALICE", "--password-stdin"}, "a fine password\n", 1, "already taken"},
       {{"sign-up", "carol", "--password-stdin"}, "short\n", 2, "at least 8 characters"},
@@ -102,6 +105,36 @@ TEST_F(workflow_bad_input, MissionMustBeInTheCatalogue) {
       {{"set-mission"}, "", 2, "no mission chosen"},
       {{"set-mission"}, "\n", 2, "no mission chosen"},
   });
+}
+
+TEST_F(workflow_bad_input, FilesTheCliReadsAreRegularBoundedAndNeverQuoted) {
+  alice_and_bob();
+  // On one's own machine any readable file may be named, but a device or a FIFO is not read
+  // (it would never end or never answer), nor a file over 1 MiB, and a parse error says where
+  // without quoting what it read.
+  const auto big = scratch() / "big.json";
+  std::ofstream(big) << "{\"name\": \"" << std::string(2 << 20, 'x') << "\"}";
+  const auto fifo = scratch() / "fifo.json";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const auto typo = scratch() / "typo.json";
+  std::ofstream(typo) << "{\n  \"name\": \"hunter2-secret\",\n  oops\n}";
+  const auto config = scratch() / "fsm.txt";
+  std::ofstream(config) << std::string(2 << 20, ' ');
+  expect_all_refused({
+      {{"set-mission", "/dev/zero"}, "", 2, "mission file /dev/zero is not a regular file"},
+      {{"set-mission", "/dev/urandom"}, "", 2, "is not a regular file"},
+      {{"set-mission", fifo.string()}, "", 2, "is not a regular file"},
+      {{"set-mission", scratch().string() + "/"}, "", 2, "is not a regular file"},
+      {{"set-mission", big.string()}, "", 2, "is larger than 1 MiB"},
+      {{"set-mission", typo.string()}, "", 2, "(line 3, column 3)"},
+      {{"evaluate", "--mission", "/dev/zero", "--seed", "1", "--fsm-config", "--nstates", "1", "--s0", "0"}, "", 2,
+       "is not a regular file"},
+      {{"evaluate", "--mission", "aac", "--seed", "1", "--config-file", "/dev/zero"}, "", 2, "is not a regular file"},
+      {{"evaluate", "--mission", "aac", "--seed", "1", "--config-file", config.string()}, "", 2, "larger than 1 MiB"},
+  });
+  const std::string said = run({"set-mission", typo.string()}).err;
+  EXPECT_EQ(said.find("hunter2"), std::string::npos) << said;
+  EXPECT_EQ(said.find("oops"), std::string::npos) << said;
 }
 
 TEST_F(workflow_bad_input, EveryProjectCommandNeedsASignedInUser) {

@@ -78,6 +78,8 @@ std::string WorkflowTest::snapshot() const {
     while (tables.step()) {
       const std::string table = tables.text(0);
       text << "table " << table << '\n' << tables.text(1) << '\n';
+      // The count of failed sign-ins is the one thing a refused sign-in must change.
+      if (table == "sign_in_failures") continue;
       auto rows = db.prepare("SELECT * FROM \"" + table + "\" ORDER BY rowid");
       const int columns = rows.column_count();
       while (rows.step()) {
