@@ -6,7 +6,9 @@
 #include <csignal>
 #include <iostream>
 #include <memory>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include "cli/command_registry.hpp"
 #include "core/home.hpp"
@@ -19,11 +21,8 @@ struct WebOptions {
   std::string host = "127.0.0.1";
   int port = 8080;
   std::string web_root = SWARMDESIGN_WEB_ROOT;
+  std::vector<std::string> allowed_hosts;
 };
-
-bool is_loopback(const std::string& host) {
-  return host == "localhost" || host == "::1" || host.rfind("127.", 0) == 0;
-}
 
 void run_exp(const WebOptions& o) {
   if (o.port < 0 || o.port > 65535) throw UsageError("--port " + std::to_string(o.port) + " is not a port (0-65535)");
@@ -34,11 +33,16 @@ void run_exp(const WebOptions& o) {
   sigaddset(&signals, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &signals, nullptr);
 
-  web::WebServer server({o.host, o.port, o.web_root, swarmdesign_home()});
+  for (const std::string& name : o.allowed_hosts)
+    if (name.empty() || name.size() > 253 || name.find_first_of(" /\\@?#") != std::string::npos)
+      throw UsageError("--allowed-host '" + name + "' is not a host name (give a name such as lab.example.org)");
+  web::WebServer server({o.host, o.port, o.web_root, swarmdesign_home(), o.allowed_hosts, {}});
   const int port = server.bind();
-  if (!is_loopback(o.host))
+  if (!web::HostCheck::is_loopback(o.host))
     std::cout << "Warning: listening on " << o.host << ", not only on this machine: anyone who can reach it "
               << "may try to sign in.\n";
+  std::cout << "Answers requests for " << server.hosts().describe()
+            << " (others: --allowed-host NAME)" << std::endl;
   const std::string shown = o.host.find(':') != std::string::npos ? "[" + o.host + "]" : o.host;
   std::cout << "SwarmDesign web app: http://" << shown << ":" << port << "/  (Ctrl-C stops it)" << std::endl;
   std::thread waiter([&server, signals] {
@@ -60,8 +64,13 @@ const CommandRegistrar registrar{60, [](CLI::App& app, Context&) {
   cmd->add_option("--port", o->port, "TCP port (0: any free port)")->capture_default_str();
   cmd->add_option("--host", o->host, "address to listen on (127.0.0.1: this machine only)")->capture_default_str();
   cmd->add_option("--web-root", o->web_root, "folder of the built front end")->capture_default_str();
+  cmd->add_option("--allowed-host", o->allowed_hosts,
+                  "a host name the server answers besides its address (repeatable), e.g. the lab's name for it");
   cmd->footer("Sign in with your SwarmDesign account (swarmdesign sign-up). Every page and API route needs a "
-              "session.\n\nExample:\n  swarmdesign run-exp\n  swarmdesign run-exp --port 9000");
+              "session. A request naming another Host is refused (no web page can reach the server by DNS "
+              "rebinding); 5 wrong passwords in a row lock a name for a minute, 20 lock the client's address."
+              "\n\nExample:\n  swarmdesign run-exp\n  swarmdesign run-exp --port 9000\n"
+              "  swarmdesign run-exp --host 0.0.0.0 --allowed-host lab.example.org");
   cmd->callback([o] { run_exp(*o); });
 }};
 

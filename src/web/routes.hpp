@@ -14,15 +14,19 @@
 #include "storage/accounts.hpp"
 #include "web/run_registry.hpp"
 #include "web/session_guard.hpp"
+#include "web/sign_in_limiter.hpp"
 
 namespace sd::web {
 
 /// What the routes share for the server's lifetime.
 struct WebContext {
-  WebContext(std::filesystem::path home_folder, std::filesystem::path web_root_folder)
-      : home(home_folder), web_root(std::move(web_root_folder)), designs(home_folder, "web") {}
+  WebContext(std::filesystem::path home_folder, std::filesystem::path web_root_folder, storage::SignInPolicy policy)
+      : home(home_folder), web_root(std::move(web_root_folder)), sign_in(policy), addresses(policy),
+        designs(home_folder, "web") {}
   std::filesystem::path home;
   std::filesystem::path web_root;  // the built front end (the report page's bundle)
+  storage::SignInPolicy sign_in;
+  SignInLimiter addresses;         // failed sign-ins per client address
   SessionGuard guard;
   RunRegistry runs;
   app::BackgroundDesigns designs;

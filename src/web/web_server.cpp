@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 
+#include "storage/passwords.hpp"
 #include "web/http_io.hpp"
 #include "web/routes.hpp"
 
@@ -11,7 +12,7 @@ namespace sd::web {
 
 WebServer::WebServer(WebServerOptions options)
     : options_(std::move(options)),
-      context_(std::make_unique<WebContext>(options_.home, options_.web_root)),
+      context_(std::make_unique<WebContext>(options_.home, options_.web_root, options_.sign_in)),
       server_(std::make_unique<httplib::Server>()) {
   httplib::Server& s = *server_;
   s.new_task_queue = [] { return new httplib::ThreadPool(kServerThreads); };
@@ -25,6 +26,14 @@ WebServer::WebServer(WebServerOptions options)
     int yes = 1;
     setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
   });  // stream chunks are small: Nagle + delayed ACK would hold each for 40 ms
+
+  s.set_pre_routing_handler([this](const httplib::Request& request, httplib::Response& response) {
+    if (hosts_.allows(request.get_header_value("Host"))) return httplib::Server::HandlerResponse::Unhandled;
+    send_json(response, {{"error", "this server does not answer requests for the host named in the request"}}, 403);
+    return httplib::Server::HandlerResponse::Handled;
+  });
+  // The first unknown name's check would otherwise also pay for making the dummy hash.
+  storage::dummy_password_hash();
 
   if (!options_.web_root.empty() && !s.set_mount_point("/", options_.web_root.string()))
     throw std::runtime_error("the web root " + options_.web_root.string() +
@@ -67,6 +76,7 @@ int WebServer::bind() {
   if (port < 0)
     throw std::runtime_error("cannot listen on " + options_.host + ":" + std::to_string(options_.port) +
                              " (in use, or not an address of this machine)");
+  hosts_ = HostCheck(options_.host, port, options_.allowed_hosts);
   return port;
 }
 

@@ -4,6 +4,10 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
+
+#include "storage/sign_in_attempts.hpp"
+#include "web/host_check.hpp"
 
 namespace httplib {
 class Server;
@@ -18,6 +22,8 @@ struct WebServerOptions {
   int port = 8080;                 // 0: any free port
   std::filesystem::path web_root;  // the built front end
   std::filesystem::path home;      // the SwarmDesign home (accounts, projects)
+  std::vector<std::string> allowed_hosts;  // host names it answers besides its address (host_check.hpp)
+  storage::SignInPolicy sign_in;   // lock-outs after failed sign-ins
 };
 
 /// Most bytes a request body may have (a configuration string is under 2 kB).
@@ -32,6 +38,8 @@ class WebServer {
 
   /// Binds the address; returns the port (the one chosen when 0 was asked). Throws on failure.
   int bind();
+  /// The Host values it answers (known once bound).
+  const HostCheck& hosts() const { return hosts_; }
   /// Serves until stop() (from another thread or a signal handler's thread).
   void serve();
   void stop();
@@ -40,6 +48,7 @@ class WebServer {
   WebServerOptions options_;
   std::unique_ptr<WebContext> context_;
   std::unique_ptr<httplib::Server> server_;
+  HostCheck hosts_;  // set by bind(), before the first request is read
 };
 
 }  // namespace sd::web

@@ -17,8 +17,13 @@ Answer answer_of(const httplib::Result& result) {
 
 }  // namespace
 
-RunningServer::RunningServer(const std::filesystem::path& home, const std::filesystem::path& web_root) {
-  server_ = std::make_unique<web::WebServer>(web::WebServerOptions{"127.0.0.1", 0, web_root, home});
+RunningServer::RunningServer(const std::filesystem::path& home, const std::filesystem::path& web_root)
+    : RunningServer(web::WebServerOptions{"127.0.0.1", 0, web_root, home, {}, {}}) {}
+
+RunningServer::RunningServer(web::WebServerOptions options) {
+  options.host = "127.0.0.1";
+  options.port = 0;
+  server_ = std::make_unique<web::WebServer>(std::move(options));
   port_ = server_->bind();
   thread_ = std::thread([this] { server_->serve(); });
 }

@@ -17,6 +17,8 @@ namespace sd::test {
 class RunningServer {
  public:
   explicit RunningServer(const std::filesystem::path& home, const std::filesystem::path& web_root = {});
+  /// With these options, but always on a free loopback port.
+  explicit RunningServer(web::WebServerOptions options);
   ~RunningServer();
   int port() const { return port_; }
 
