@@ -55,6 +55,22 @@ std::vector<std::uint32_t> wall_colors(const Mission& m) {
   return color;
 }
 
+/// Text from a mission file as SVG character data: a title such as "<script>" stays text.
+std::string xml_text(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char c : text) {
+    switch (c) {
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '&': out += "&amp;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
 std::vector<std::string> describe_random_events(const Mission& m) {
   auto selector = [](const char* what, int s) {
     return s == MissionEvent::kRandom ? std::string("a random ") + what
@@ -101,7 +117,7 @@ std::string mission_svg(const Mission& m) {
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << static_cast<int>(width * 250) << "\" height=\""
       << static_cast<int>(height * 250) << "\" viewBox=\"" << lo.x << " " << -hi.y << " " << width << " " << height
       << "\">\n";
-  out << "<title>" << m.title << " (" << m.name << ")</title>\n";
+  out << "<title>" << xml_text(m.title) << " (" << xml_text(m.name) << ")</title>\n";
   // The world's y axis points up; SVG's points down.
   out << "<g transform=\"scale(1 -1)\">\n";
   out << "<rect x=\"" << lo.x << "\" y=\"" << lo.y << "\" width=\"" << width << "\" height=\"" << height
@@ -134,7 +150,7 @@ std::string mission_svg(const Mission& m) {
   for (std::size_t i = 0; i < captions.size(); ++i)
     // Text drawn at 1000x and scaled down: renderers hint tiny font sizes badly.
     out << "<text class=\"caption\" transform=\"translate(" << lo.x + 0.05 << " " << -lo.y + kLine * (static_cast<double>(i) + 0.75)
-        << ") scale(0.001)\" font-family=\"sans-serif\" font-size=\"45\">" << captions[i] << "</text>\n";
+        << ") scale(0.001)\" font-family=\"sans-serif\" font-size=\"45\">" << xml_text(captions[i]) << "</text>\n";
   out << "</svg>\n";
   return out.str();
 }

@@ -26,6 +26,8 @@ class LiveRun {
   LiveRun& operator=(const LiveRun&) = delete;
 
   std::int64_t owner() const { return owner_; }
+  /// Robots times ticks: what its timeline holds, in robot-frames.
+  long long robot_ticks() const { return static_cast<long long>(mission_.robots) * (mission_.ticks + 1); }
   bool finished() const;
 
   /// Waits up to `timeout_ms` for events after the first `from`; appends them to `out` and

@@ -7,11 +7,24 @@ namespace sd::web {
 std::int64_t RunRegistry::start(std::int64_t owner, Mission mission, ControlSoftware software, std::string text,
                                 std::uint64_t seed) {
   std::lock_guard lock(mutex_);
-  std::size_t running = 0;
-  for (const auto& [id, run] : runs_) running += run->finished() ? 0 : 1;
+  std::size_t running = 0, running_of_owner = 0;
+  for (const auto& [id, run] : runs_) {
+    if (run->finished()) continue;
+    ++running;
+    if (run->owner() == owner) ++running_of_owner;
+  }
+  if (running_of_owner >= kMaxRunningPerUser)
+    throw app::Conflict("you are already simulating " + std::to_string(running_of_owner) +
+                        " runs: try again when one has finished");
   if (running >= kMaxRunning)
     throw app::Conflict("the server is already simulating " + std::to_string(running) + " runs: try again in a moment");
-  while (runs_.size() >= kMaxKept) {  // forget the oldest finished run
+  const auto kept_robot_ticks = [this] {
+    long long sum = 0;
+    for (const auto& [id, run] : runs_) sum += run->robot_ticks();
+    return sum;
+  };
+  const long long adding = static_cast<long long>(mission.robots) * (mission.ticks + 1);
+  while (runs_.size() >= kMaxKept || kept_robot_ticks() + adding > kMaxKeptRobotTicks) {  // forget the oldest finished run
     auto oldest = runs_.begin();
     while (oldest != runs_.end() && !oldest->second->finished()) ++oldest;
     if (oldest == runs_.end()) break;
