@@ -82,7 +82,7 @@ std::vector<std::string> describe_random_events(const Mission& m) {
 
 std::string mission_svg(const Mission& m) {
   // Bounds: the arena's walls (the floor beyond them is not drawn), start region, jail and
-  // lights, with a small margin; without walls, the floor patches and at least 1 m square.
+  // lit lights, with a small margin; without walls, the floor patches and at least 1 m square.
   const std::vector<Vec2> outline = arena_outline(m);
   Vec2 lo{1e9, 1e9}, hi{-1e9, -1e9};
   auto grow = [&](Vec2 a, Vec2 b) {
@@ -96,7 +96,8 @@ std::string mission_svg(const Mission& m) {
   }
   grow(m.start.bounds().first, m.start.bounds().second);
   if (m.arrest) grow(m.arrest->jail.bounds().first, m.arrest->jail.bounds().second);
-  for (const Light& l : m.arena.lights) grow(l.position.xy(), l.position.xy());
+  for (const Light& l : m.arena.lights)  // an unlit light is not drawn: it must not widen the picture
+    if (l.intensity > 0) grow(l.position.xy(), l.position.xy());
   const double margin = 0.04 * std::max(hi.x - lo.x, hi.y - lo.y);
   lo = lo - Vec2{margin, margin};
   hi = hi + Vec2{margin, margin};
