@@ -78,6 +78,24 @@ std::vector<std::string> describe_random_events(const Mission& m) {
   return lines;
 }
 
+constexpr std::size_t kCaptionChars = 44;  // per caption line, so that it fits the drawing's width
+
+/// Text broken at spaces into lines of at most `width` characters (a longer word keeps its line).
+std::vector<std::string> wrapped(const std::string& text, std::size_t width) {
+  std::vector<std::string> lines;
+  std::istringstream words(text);
+  std::string line;
+  for (std::string word; words >> word;) {
+    if (!line.empty() && line.size() + 1 + word.size() > width) {
+      lines.push_back(line);
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+  }
+  if (!line.empty()) lines.push_back(line);
+  return lines;
+}
+
 }  // namespace
 
 std::string mission_svg(const Mission& m) {
@@ -102,8 +120,10 @@ std::string mission_svg(const Mission& m) {
   lo = lo - Vec2{margin, margin};
   hi = hi + Vec2{margin, margin};
 
-  const std::vector<std::string> captions = describe_random_events(m);
-  const double line = (hi.x - lo.x) / 24;  // caption line height: readable at any arena size
+  std::vector<std::string> captions;
+  for (const std::string& event : describe_random_events(m))
+    for (std::string& l : wrapped(event, kCaptionChars)) captions.push_back(std::move(l));
+  const double line = (hi.x - lo.x) / 18;  // caption line height: readable at any arena size
   std::ostringstream out;
   const double width = hi.x - lo.x, height = hi.y - lo.y + line * static_cast<double>(captions.size());
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << static_cast<int>(width * 250) << "\" height=\""
@@ -153,7 +173,7 @@ std::string mission_svg(const Mission& m) {
   for (std::size_t i = 0; i < captions.size(); ++i)
     // Text drawn at 1000x and scaled down: renderers hint tiny font sizes badly.
     out << "<text class=\"caption\" transform=\"translate(" << lo.x + 0.3 * line << " " << -lo.y + line * (static_cast<double>(i) + 0.75)
-        << ") scale(0.001)\" font-family=\"sans-serif\" font-size=\"" << line * 700 << "\">" << captions[i] << "</text>\n";
+        << ") scale(0.001)\" font-family=\"sans-serif\" font-size=\"" << line * 650 << "\">" << captions[i] << "</text>\n";
   out << "</svg>\n";
   return out.str();
 }
