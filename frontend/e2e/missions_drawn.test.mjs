@@ -121,6 +121,10 @@ test('the Missions tab at 1280 and 1920 px', { timeout: 30000 }, async () => {
   await page.setViewportSize({ width: 1920, height: 1080 });
   await page.waitForFunction(() => [...document.querySelectorAll('.mission-card img')].slice(0, 12).every((i) => i.complete && i.naturalWidth > 0));
   await shot(page, 'tab-1920');
+  // The last row (TuttiFrutti's arenas, with their captions) as well.
+  await page.evaluate(() => { const g = document.getElementById('mission-grid'); g.scrollTop = g.scrollHeight; });
+  await page.waitForFunction(() => [...document.querySelectorAll('.mission-card img')].every((i) => i.complete && i.naturalWidth > 0));
+  await shot(page, 'tab-1920-end');
 });
 
 test('the page raised no uncaught error', () => {
