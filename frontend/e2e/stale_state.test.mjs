@@ -63,6 +63,7 @@ test('a malformed string clears the old drawing; a good one brings a drawing bac
   await page.waitForFunction(() => window.__sd.editor.cy.nodes().length === 0);
   assert.match(await page.textContent('#properties'), /does not parse/);
   assert.equal(await page.textContent('#flavours-used'), '');
+  assert.equal(await page.textContent('#config-description'), '');  // it described the tree
   await shot(page, 'editor-malformed');
   await page.fill('#config-text', FSM);
   await page.waitForFunction(() => window.__sd.editor.current.model?.architecture === 'fsm');

@@ -120,6 +120,7 @@ export function initEditor({ onExec }) {
         // The old drawing is not what the text says any more: clear it (undo brings it back).
         current = { model: null, text };
         cy.elements().remove();
+        $('config-description').textContent = '';
         showFlavoursUsed();
         updateChrome();
         renderProperties();
