@@ -128,7 +128,11 @@ test('the best design opens in the editor, drawn full size', { timeout: 30000 },
 
 test('after a crash and a restart the design list and the state box agree: interrupted', { timeout: 120000 }, async () => {
   await page.waitForFunction(() => !document.getElementById('design-start').disabled);
-  await page.click('#design-start');  // resumes design 1
+  // The stopped design resumes as it was started, whatever the form says, and the page says so.
+  await page.selectOption('#design-preset', 'all');
+  assert.equal(await page.textContent('#design-start'), 'Resume design #1');
+  assert.match(await page.textContent('#design-resume'), /Design #1 is interrupted: Start resumes it as it was started \(fsm · chocolate · seed 7/);
+  await page.click('#design-start');
   await page.waitForFunction(() => /^running/.test(document.getElementById('design-state').textContent), null, { timeout: 20000 });
   await page.waitForFunction(() => /#1 running/.test(document.querySelector('[data-testid="design-1"]')?.textContent || ''));
   const url = await server.crashAndRestart();

@@ -102,6 +102,7 @@ export function initMonitor({ onWatch, onEdit, missions }) {
       for (const id of ['watch-best', 'edit-best']) $(id).disabled = true;
       $('design-start').disabled = false;
       $('design-stop').disabled = true;
+      showResumable(null);
       return;
     }
     $('runs-used').textContent = `${progress.experiments_used ?? 0} / ${design.budget}`;
@@ -115,6 +116,7 @@ export function initMonitor({ onWatch, onEdit, missions }) {
     $('design-state').textContent = `${design.state}${s.running_here ? ' (here)' : ''}${slurm}${progress.finish_reason ? ` · ${progress.finish_reason}` : ''}`;
     $('design-start').disabled = design.state === 'running';
     $('design-stop').disabled = design.state !== 'running';
+    showResumable(design);
 
     $('design-info').textContent = `Design #${design.id}: ${startedWith(design)}`;
     renderElites(progress.elites || []);
@@ -140,6 +142,18 @@ export function initMonitor({ onWatch, onEdit, missions }) {
         .then((answer) => { if (bestDrawn === best) { renderModel(graph, answer.software, { relayout: true }); graph.fit(undefined, 10); } })
         .catch(() => {});
     }
+  }
+
+  /// An interrupted (or failed) design resumes with what it was started with, whatever the form
+  /// says, unless the user gives it up (fresh): the button and a note say which will happen.
+  function showResumable(design) {
+    const resumable = !!design && (design.state === 'interrupted' || design.state === 'failed');
+    const fresh = $('design-fresh').checked;
+    $('design-resume').hidden = !resumable;
+    $('design-resume-text').textContent = resumable
+      ? `Design #${design.id} is ${design.state}: Start resumes it as it was started (${startedWith(design)}). ` : '';
+    $('design-start').textContent = resumable && !fresh ? `Resume design #${design.id}` : 'Start design';
+    if (!resumable) $('design-fresh').checked = false;
   }
 
   function renderElites(elites, empty = 'none yet: the first race is under way') {
@@ -182,19 +196,22 @@ export function initMonitor({ onWatch, onEdit, missions }) {
   $('design-start').addEventListener('click', async () => {
     if (!selected) return;
     const name = selected;
+    const resume = !$('design-resume').hidden && !$('design-fresh').checked;
     try {
       const budget = form.budget();
-      if (budget !== '' && budget !== String(projectBudgets.get(name) ?? '')) {
+      if (!resume && budget !== '' && budget !== String(projectBudgets.get(name) ?? '')) {
         const project = await api(`/api/projects/${encodeURIComponent(name)}/budget`, { body: { budget } });
         projectBudgets.set(name, project.budget);
       }
-      await api(`/api/projects/${encodeURIComponent(name)}/designs`, { body: form.request() });
+      const body = resume ? {} : { ...form.request(), fresh: $('design-fresh').checked };
+      await api(`/api/projects/${encodeURIComponent(name)}/designs`, { body });
     } catch { return; }
     fastUntil = Date.now() + 10000;
     refreshDesigns();
     refreshProjects().catch(() => {});  // the budget the form may have set
     poll();
   });
+  $('design-fresh').addEventListener('change', () => { if (status) showResumable(status.design); });
   $('design-stop').addEventListener('click', async () => {
     if (!selected) return;
     try { await api(`/api/projects/${encodeURIComponent(selected)}/designs/stop`, { body: {} }); } catch { /* shown */ }
