@@ -98,6 +98,7 @@ export function initMonitor({ onWatch, onEdit, missions }) {
       $('design-info').textContent = '';
       renderElites([], 'no design yet: start one above');
       if (plot) plot.setData([], []);
+      showConvergence(false);
       $('best-score').textContent = 'no configuration yet';
       for (const id of ['watch-best', 'edit-best']) $(id).disabled = true;
       $('design-start').disabled = false;
@@ -124,6 +125,7 @@ export function initMonitor({ onWatch, onEdit, missions }) {
     const points = s.convergence || [];
     if (!plot) plot = linePlot($('convergence-plot'), { xLabel: 'iteration', yLabel: 'best elite mean', height: 200, points: true, integerX: true });
     plot.setData(points.map((p) => p.iteration), points.map((p) => p.best_score));
+    showConvergence(points.length > 0);
 
     const best = (progress.best && progress.best.configuration) || design.best_configuration;
     const score = (progress.best && progress.best.mean_score) ?? design.best_score;
@@ -142,6 +144,11 @@ export function initMonitor({ onWatch, onEdit, missions }) {
         .then((answer) => { if (bestDrawn === best) { renderModel(graph, answer.software, { relayout: true }); graph.fit(undefined, 10); } })
         .catch(() => {});
     }
+  }
+
+  function showConvergence(any) {
+    $('convergence-plot').hidden = !any;
+    $('convergence-empty').hidden = any;
   }
 
   /// An interrupted (or failed) design resumes with what it was started with, whatever the form
