@@ -98,7 +98,10 @@ export function frameSvg(run, t, { trails = false, links = false } = {}) {
   const vb = /viewBox\s*=\s*"([^"]+)"/.exec(s.svg);
   const [bx, by, , bh] = vb ? vb[1].trim().split(/[\s,]+/).map(Number) : [0, 0, 1, 1];
   const line = bh / 30;
-  overlayLines(run, t).forEach((text, i) => {
+  const lines = overlayLines(run, t);
+  // A pale band behind the text, so that it reads over the arena (about 0.55 em per character).
+  parts.push(`<rect class="overlay-band" x="${bx}" y="${by}" width="${line * (1 + 0.8 * 0.55 * Math.max(...lines.map((l) => l.length)))}" height="${line * (lines.length * 1.2 + 0.6)}" fill="#ffffff" fill-opacity="0.8"/>`);
+  lines.forEach((text, i) => {
     // Text drawn at 1000x and scaled down, as the arena's captions: renderers hint tiny fonts badly.
     parts.push(`<text class="overlay" transform="translate(${bx + line * 0.5} ${by + line * (1.2 + i * 1.2)}) scale(0.001)" font-family="sans-serif" font-size="${line * 800}" fill="#1d2430">${text}</text>`);
   });

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -44,6 +45,11 @@ void SvgFrameWriter::on_tick(const Simulation& sim) {
   const double line = view_height_ / 30;
   char text[160];
   std::snprintf(text, sizeof text, "tick %d / %d &#183; %.1f s &#183; objective %.6g", tick, last_tick_, tick * epuck::kTickSeconds, sim.score());
+  // A pale band behind it, so that it reads over the arena (about 0.55 em per character; the
+  // two &#183; entities are one character each).
+  out << "<rect class=\"overlay-band\" x=\"" << view_x_ << "\" y=\"" << view_y_ << "\" width=\""
+      << line * (1.0 + 0.8 * 0.55 * static_cast<double>(std::strlen(text) - 10)) << "\" height=\"" << line * 1.6
+      << "\" fill=\"#ffffff\" fill-opacity=\"0.8\"/>\n";
   out << "<text class=\"overlay\" transform=\"translate(" << view_x_ + line * 0.5 << " " << view_y_ + line * 1.2
       << ") scale(0.001)\" font-family=\"sans-serif\" font-size=\"" << line * 800 << "\" fill=\"#1d2430\">" << text << "</text>\n</svg>\n";
   char name[32];
