@@ -8,7 +8,7 @@ if(NOT SWARMDESIGN_NODE OR NOT EXISTS ${frontend_dir}/node_modules/esbuild)
                       "(or: cd frontend && npm ci)")
 endif()
 file(GLOB_RECURSE frontend_sources CONFIGURE_DEPENDS ${frontend_dir}/src/* ${frontend_dir}/index.html
-     ${frontend_dir}/build.mjs ${frontend_dir}/package-lock.json)
+     ${frontend_dir}/build.mjs ${frontend_dir}/favicon.mjs ${frontend_dir}/package-lock.json)
 set(web_root ${PROJECT_BINARY_DIR}/web-root)
 add_custom_command(OUTPUT ${web_root}/index.html
                    COMMAND ${SWARMDESIGN_NODE} build.mjs --outdir ${web_root}

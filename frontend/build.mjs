@@ -1,11 +1,13 @@
 // Bundles the front end: node build.mjs --outdir DIR
-// src/main.js (and the CSS it imports, uPlot's included) -> DIR/main.js + DIR/main.css; index.html copied.
+// src/main.js (and the CSS it imports, uPlot's included) -> DIR/main.js + DIR/main.css; index.html copied;
+// favicon.svg and favicon.ico drawn (favicon.mjs).
 // src/report/report_main.js -> DIR/report.js + DIR/report.css: a classic script (iife) that
 // `swarmdesign report` inlines into the offline report.html.
 import * as esbuild from 'esbuild';
 import { copyFileSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { writeFavicons } from './favicon.mjs';
 
 const here = dirname(fileURLToPath(import.meta.url));
 const args = process.argv.slice(2);
@@ -49,4 +51,5 @@ await esbuild.build({
 });
 makeInlineSafe(join(outdir, 'report.js'));
 copyFileSync(join(here, 'index.html'), join(outdir, 'index.html'));
+writeFavicons(outdir);
 console.log(`front end built into ${outdir} in ${Date.now() - started} ms`);

@@ -11,6 +11,7 @@ packages=(
   libcpp-httplib-dev  # the web app's server (run-exp)
   libpugixml-dev  # ARGoS experiment files (mission export-argos)
   chromium  # the web app's browser tests (headless)
+  ffmpeg  # ffprobe checks the web app's downloaded run videos (browser tests)
   jq  # bench/native_vs_irace.sh
   openmpi-bin libopenmpi-dev  # designs on MPI ranks (mpirun -np N swarmdesign ...)
   slurm-client  # cluster projects submit designs with sbatch from a login node

@@ -52,6 +52,25 @@ export async function startServer({ users = [] } = {}) {
     }
   }
   const root = webRoot(tmp);
+  let run = await launchServer(env, root);
+  process.once('exit', () => run.stop());
+  return {
+    get url() { return run.url; }, env, tmp, output: () => run.output(),
+    /// Kills the server as a crash would (SIGKILL) and starts another on the same home.
+    async crashAndRestart() {
+      await run.kill('SIGKILL');
+      run = await launchServer(env, root);
+      return run.url;
+    },
+    async close() {
+      await run.kill('SIGTERM');
+      rmSync(tmp, { recursive: true, force: true });
+    },
+  };
+}
+
+/// swarmdesign run-exp on a free port, once it answers.
+async function launchServer(env, root) {
   const port = await freePort();
   const child = spawn(BIN, ['run-exp', '--port', String(port), '--web-root', root], { env, stdio: ['ignore', 'pipe', 'pipe'] });
   let output = '';
@@ -68,21 +87,17 @@ export async function startServer({ users = [] } = {}) {
     if (Date.now() > deadline) { child.kill(); throw new Error(`run-exp did not answer on ${url}: ${output}`); }
     await new Promise((r) => setTimeout(r, 100));
   }
-  const stop = () => {
-    if (child.exitCode === null) child.kill('SIGTERM');
-  };
-  process.once('exit', stop);
   return {
-    url, env, tmp, output: () => output,
-    async close() {
-      if (child.exitCode === null) {
-        const exited = new Promise((r) => child.once('exit', r));
-        child.kill('SIGTERM');
-        const timer = setTimeout(() => child.kill('SIGKILL'), 5000);
-        await exited;
-        clearTimeout(timer);
-      }
-      rmSync(tmp, { recursive: true, force: true });
+    url,
+    output: () => output,
+    stop() { if (child.exitCode === null && child.signalCode === null) child.kill('SIGTERM'); },
+    async kill(signal) {
+      if (child.exitCode !== null || child.signalCode !== null) return;
+      const exited = new Promise((r) => child.once('exit', r));
+      child.kill(signal);
+      const timer = setTimeout(() => child.kill('SIGKILL'), 5000);
+      await exited;
+      clearTimeout(timer);
     },
   };
 }
@@ -96,8 +111,8 @@ export async function launchBrowser() {
   });
 }
 
-export async function newPage(browser, errors = []) {
-  const page = await browser.newPage({ viewport: { width: 1400, height: 900 } });
+export async function newPage(browser, errors = [], viewport = { width: 1400, height: 900 }) {
+  const page = await browser.newPage({ viewport, acceptDownloads: true });
   page.setDefaultTimeout(15000);
   page.on('pageerror', (e) => errors.push(e.message));
   return page;
@@ -117,4 +132,11 @@ export async function signIn(page, url, name) {
   await page.fill('#signin-password', PASSWORD);
   await page.click('#signin-submit');
   await page.waitForSelector('body[data-ready="true"]');
+}
+
+/// Opens the app at url, signing in only if the page asks (a session cookie may still hold).
+export async function openSignedIn(page, url, name) {
+  await page.goto(url);
+  await page.waitForSelector('body[data-ready="true"], #signin-form:visible');
+  if (await page.isVisible('#signin-form')) await signIn(page, url, name);
 }

@@ -37,7 +37,8 @@ export function btEditor(ctx) {
       const model = ctx.model();
       const i = element.data('index');
       const node = model.nodes[i];
-      panel.append(el('div', { class: 'props-title', text: `Node ${i}${i === 0 ? ' (root)' : ''}: ${node.type}` }));
+      const name = sm.btNodeNames(model)[i] ?? `node ${i}`;  // as the configuration string names it
+      panel.append(el('div', { class: 'props-title', testid: 'node-name', text: `Node ${name}: ${node.type}` }));
       if (sm.isComposite(node)) {
         const select = el('select', { testid: 'bt-type', id: 'bt-type' });
         for (const t of COMPOSITES) {

@@ -87,7 +87,11 @@ export function renderPalette(container, onPick) {
         id.textContent = twoDigits(m.id);
         const name = document.createElement('span');
         name.textContent = m.name;
-        item.append(id, name);
+        const tag = document.createElement('span');  // the flavour, so that mixing flavours is visible
+        tag.className = `flavour-tag flavour-${flavour.name}`;
+        tag.textContent = flavour.name;
+        item.dataset.flavour = flavour.name;
+        item.append(id, name, tag);
         item.addEventListener('click', () => onPick(kind, m));
         group.append(item);
       }

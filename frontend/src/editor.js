@@ -54,11 +54,21 @@ export function initEditor({ onExec }) {
     $('redo').disabled = !history.canRedo();
   }
 
+  function showFlavoursUsed() {
+    const used = sm.flavoursUsed(current.model, getCatalogue());
+    $('flavours-used').textContent = current.model ? `This drawing uses: ${used.join(', ') || 'no modules'}` : '';
+    $('flavours-used').classList.toggle('mixed', used.length > 1);
+  }
+
   function renderProperties() {
     const panel = $('properties');
     panel.replaceChildren();
     const sel = cy.$(':selected');
     const editor = active();
+    if (!current.model && textarea.value.trim()) {
+      panel.append(el('p', { class: 'muted small', text: 'The configuration string does not parse: the drawing comes back once it does.' }));
+      return;
+    }
     if (!sel.length || !editor) {
       panel.append(el('p', { class: 'muted small', text: editor ? editor.hint() : 'This control software (a neural network) is shown as text only.' }));
       return;
@@ -74,6 +84,7 @@ export function initEditor({ onExec }) {
     if (select) cy.getElementById(select).select();
     if (!keepText) textarea.value = current.text;
     $('config-description').textContent = current.model && current.model.architecture === 'nn' ? 'A neural network: shown as text only.' : '';
+    showFlavoursUsed();
     updateChrome();
     renderProperties();
   }
@@ -104,7 +115,16 @@ export function initEditor({ onExec }) {
       if (answer.description) $('config-description').textContent = answer.description;
     } catch (e) {
       if (serial !== parseSerial) return;
-      if (e.status === 400) showParseError(e); else showError(e.message);
+      if (e.status === 400) {
+        showParseError(e);
+        // The old drawing is not what the text says any more: clear it (undo brings it back).
+        current = { model: null, text };
+        cy.elements().remove();
+        $('config-description').textContent = '';
+        showFlavoursUsed();
+        updateChrome();
+        renderProperties();
+      } else showError(e.message);
     }
   }
 

@@ -1,6 +1,7 @@
 // The Exec tab: start a run (POST /api/runs), keep its stream, play / pause / step / scrub it on
 // the canvas, plot the objective, show the final score and the robots per state.
 import { api } from './api.js';
+import { download, framePng, frameSvg, recordVideo } from './exec_export.js';
 import { createGraph, renderModel, setCounts } from './graph.js';
 import { linePlot } from './plot.js';
 import { el } from './properties.js';
@@ -24,6 +25,7 @@ export function initExec() {
   let last = 0;
   let dirty = true;
   let plotDirty = false;
+  let recording = false;  // a video is being recorded: the download buttons wait
   const timeline = $('timeline');
 
   function speed() { return $('speed').value; }
@@ -109,18 +111,42 @@ export function initExec() {
   }
   requestAnimationFrame(frame);
 
+  /// Nothing of the previous run stays on screen once another is asked for (even if refused).
+  function clearRun() {
+    run = null;
+    viewer.run = null;
+    ended = false;
+    tick = 0;
+    selected = -1;
+    setPlaying(false);
+    $('final-score').textContent = '';
+    delete $('final-score').dataset.value;
+    $('tick-label').textContent = '';
+    $('objective-now').textContent = '';
+    timeline.max = '0';
+    timeline.value = '0';
+    delete timeline.dataset.received;
+    setCounts(graph, null);
+    graph.elements().remove();
+    if (plot) { plot.setData([], []); plot.setMarker(null); }
+    showRobot();
+    updateDownloads();
+  }
+
+  function updateDownloads() {
+    const ready = !!(run && run.received > 0) && !recording;
+    for (const id of ['download-png', 'download-svg']) $(id).disabled = !ready;
+    $('download-video').disabled = !ready || !ended;
+  }
+
   async function start() {
     const text = $('exec-text').value.trim();
     const mission = $('exec-mission').value;
     const seed = Number($('exec-seed').value);
     if (stream) stream.close();
-    run = null;
-    ended = false;
-    tick = 0;
-    selected = -1;
-    $('final-score').textContent = '';
+    stream = null;
+    clearRun();
     $('exec-status').textContent = 'starting…';
-    viewer.run = null;
     dirty = true;
     let answer;
     const started = performance.now();  // Exec pressed: the first frame is timed from here
@@ -147,6 +173,7 @@ export function initExec() {
       frames(r) {
         if (r.received && !window.__sdFirstFrameMs) window.__sdFirstFrameMs = performance.now() - started;
         timeline.dataset.received = String(r.received);
+        if ($('download-png').disabled) updateDownloads();
         plotDirty = true;
         dirty = true;
       },
@@ -156,13 +183,51 @@ export function initExec() {
         $('final-score').textContent = result.scoreText;
         $('final-score').dataset.value = String(result.score);
         $('exec-status').textContent = `run ${answer.id} complete: ${result.ticks} ticks`;
+        updateDownloads();
         dirty = true;
       },
       failure(message) {
         $('exec-status').textContent = `run failed: ${message}`;
+        updateDownloads();
       },
     });
   }
+
+  // ---- downloads ----
+  const drawOptions = () => ({ trails: $('show-trails').checked, links: $('show-links').checked, selected });
+  const shownTick = () => Math.min(tick, Math.max(0, run.received - 1));
+  $('download-png').addEventListener('click', async () => {
+    if (!run || !viewer.image) return;
+    const { blob, name } = await framePng(viewer, run, shownTick(), drawOptions(), Number($('video-height').value));
+    download(blob, name);
+  });
+  $('download-svg').addEventListener('click', () => {
+    if (!run) return;
+    const { blob, name } = frameSvg(run, shownTick(), drawOptions());
+    download(blob, name);
+  });
+  $('download-video').addEventListener('click', async () => {
+    if (!run || !ended || recording || !viewer.image) return;
+    const recorded = run;
+    const speedX = Number($('video-speed').value);
+    const last = recorded.received - 1;
+    const seconds = (last * recorded.scene.tick_seconds) / speedX;
+    recording = true;
+    updateDownloads();
+    try {
+      const { blob, name } = await recordVideo(viewer, recorded, {
+        speed: speedX, height: Number($('video-height').value), options: drawOptions(), last,
+        onProgress: (f) => { $('export-status').textContent = `recording the video (${seconds.toFixed(0)} s long): ${Math.round(f * 100)} %`; },
+      });
+      download(blob, name);
+      $('export-status').textContent = `video saved: ${name} (${(blob.size / 1e6).toFixed(1)} MB)`;
+    } catch (e) {
+      $('export-status').textContent = `the video could not be recorded: ${e.message}`;
+    } finally {
+      recording = false;
+      updateDownloads();
+    }
+  });
 
   $('exec-run').addEventListener('click', start);
   $('play').addEventListener('click', () => {

@@ -111,6 +111,19 @@ export function createGraph(container, { readOnly = false } = {}) {
   cy.scratch('_sdCompact', readOnly); // narrow side panels: FSMs top to bottom
   // A dragged state moves its transitions' curves, and their labels with them.
   cy.on('position', 'node', (event) => placeEdgeLabels(event.target.connectedEdges()));
+  // A window resized (or a tab shown again at another size): the drawing is fitted again, so it
+  // never sits in a corner of the area it had before.
+  let size = '';
+  new ResizeObserver(() => {
+    const now = `${container.clientWidth}x${container.clientHeight}`;
+    if (!container.clientWidth || !container.clientHeight || now === size) return;
+    size = now;
+    cy.resize();
+    if (cy.nodes().length) {
+      cy.fit(undefined, readOnly ? 10 : 30);
+      if (cy.zoom() > 1.6) { cy.zoom(1.6); cy.center(); }
+    }
+  }).observe(container);
   return cy;
 }
 

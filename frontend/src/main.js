@@ -6,6 +6,7 @@ import { DEFAULT_TEXT, initEditor } from './editor.js';
 import { initExec } from './exec.js';
 import { renderMissions } from './missions.js';
 import { initMonitor } from './monitor.js';
+import { copyFullScores } from './numbers.js';
 import { showSignIn } from './signin.js';
 import { showError } from './toast.js';
 
@@ -36,7 +37,9 @@ async function startApp(user) {
   const monitor = initMonitor({
     missions: () => missions,
     onWatch: (text, mission) => { showTab('exec'); exec.prepare({ text, mission, seed: 1, go: true }); },
+    onEdit: (text) => { showTab('editor'); editor.load(text); },
   });
+  copyFullScores();
   parts = { editor, exec, monitor };
   window.__sd = parts; // for the end-to-end tests and the curious
   window.__sd.execCounts = () => exec.graph.nodes().reduce((sum, n) => sum + (n.data('count') || 0), 0);

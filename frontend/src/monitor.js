@@ -2,14 +2,19 @@
 // runs used against the budget, iteration, configurations alive, elites, convergence, best drawn;
 // the project's experiments with their progress and a link to each report.
 import { api } from './api.js';
+import { getCatalogue } from './catalogue.js';
+import { initDesignForm } from './design_form.js';
 import { createGraph, renderModel } from './graph.js';
+import { scoreSpan } from './numbers.js';
 import { linePlot } from './plot.js';
 import { el } from './properties.js';
 
 const $ = (id) => document.getElementById(id);
 
-export function initMonitor({ onWatch, missions }) {
+export function initMonitor({ onWatch, onEdit, missions }) {
   let selected = null;
+  let projectBudgets = new Map();
+  let listed = null;  // {id, state} of the newest row of the design list as last drawn
   let timer = null;
   let status = null;
   let bestDrawn = null;
@@ -17,12 +22,15 @@ export function initMonitor({ onWatch, missions }) {
   let visible = false;
   let fastUntil = 0;
   const graph = createGraph($('best-graph'), { readOnly: true });
+  const form = initDesignForm(getCatalogue());
 
   const directionOf = (mission) => (missions().find((m) => m.name === mission) || {}).direction || 'maximize';
 
   async function refreshProjects() {
     const answer = await api('/api/projects');
     const projects = Array.isArray(answer) ? answer : answer.projects || [];
+    projectBudgets = new Map(projects.map((p) => [p.name, p.budget]));
+    if (selected && projectBudgets.has(selected) && !$('design-budget').value) form.setBudget(projectBudgets.get(selected));
     const list = $('project-list');
     list.replaceChildren(...projects.map((p) => el('li', {
       class: p.name === selected ? 'selected' : '', testid: `project-${p.name}`,
@@ -37,19 +45,29 @@ export function initMonitor({ onWatch, missions }) {
     selected = name;
     status = null;
     bestDrawn = null;
+    listed = null;
     $('monitor-project').textContent = name;
+    form.setBudget(projectBudgets.get(name));
     for (const li of $('project-list').children) li.classList.toggle('selected', li.dataset.testid === `project-${name}`);
     graph.elements().remove();
     poll();
     refreshDesigns();
   }
 
+  /// What a design was started with, as `status` prints it.
+  const startedWith = (d) => `${d.architectures} · ${d.flavours} · seed ${d.seed} · budget ${d.budget} · ${d.mission}`;
+
+  /// The list reads its rows from /designs; the newest row's state is the status box's (both come
+  /// from the same storage reading, and the list is fetched again whenever they would differ).
   async function refreshDesigns() {
     if (!selected) return;
     const rows = await api(`/api/projects/${encodeURIComponent(selected)}/designs`).catch(() => []);
-    $('design-list').replaceChildren(...rows.map((d) => el('li', {},
-      el('span', { text: `#${d.id} ${d.state}` }),
-      el('span', { class: 'muted', text: `${d.mission} · ${d.budget}${d.best_score !== null && d.best_score !== undefined ? ` · best ${d.best_score}` : ''}` }))));
+    listed = rows.length ? { id: rows[0].id, state: rows[0].state } : null;
+    $('design-list').replaceChildren(...rows.map((d) => el('li', { testid: `design-${d.id}`, class: 'design-row', title: d.folder },
+      el('span', { class: 'design-head', text: `#${d.id} ${d.state}` }),
+      el('span', { class: 'muted', text: startedWith(d) }),
+      d.best_score !== null && d.best_score !== undefined ? scoreSpan(el, d.best_score, { class: 'muted' }) : '')));
+    if (!rows.length) $('design-list').append(el('li', { class: 'muted small', text: 'no design yet' }));
   }
 
   /// The project's experiments (swarmdesign experiment): progress and a link to the report page.
@@ -77,8 +95,15 @@ export function initMonitor({ onWatch, missions }) {
       for (const id of ['iteration', 'alive']) $(id).textContent = '–';
       $('runs-used').textContent = s.budget ? `0 / ${s.budget}` : '–';
       $('design-state').textContent = 'no design yet';
+      $('design-info').textContent = '';
+      renderElites([], 'no design yet: start one above');
+      if (plot) plot.setData([], []);
+      showConvergence(false);
+      $('best-score').textContent = 'no configuration yet';
+      for (const id of ['watch-best', 'edit-best']) $(id).disabled = true;
       $('design-start').disabled = false;
       $('design-stop').disabled = true;
+      showResumable(null);
       return;
     }
     $('runs-used').textContent = `${progress.experiments_used ?? 0} / ${design.budget}`;
@@ -92,38 +117,57 @@ export function initMonitor({ onWatch, missions }) {
     $('design-state').textContent = `${design.state}${s.running_here ? ' (here)' : ''}${slurm}${progress.finish_reason ? ` · ${progress.finish_reason}` : ''}`;
     $('design-start').disabled = design.state === 'running';
     $('design-stop').disabled = design.state !== 'running';
+    showResumable(design);
 
-    // A race lists its elites (best first) once it is over; the race under way lists none yet.
-    const finished = (s.race_log || []).filter((r) => r.elites && r.elites.length);
-    const members = (r) => new Map(r.configurations.map((c) => [c.id, c]));
-    const latest = finished.length ? finished[finished.length - 1] : null;
-    const elites = latest ? latest.elites.map((id) => members(latest).get(id)).filter(Boolean) : [];
-    $('elites').tBodies[0].replaceChildren(...elites.map((c) => el('tr', {},
-      el('td', { text: String(c.id) }), el('td', { text: String(Math.round(c.mean_score * 1000) / 1000) }), el('td', { text: String(c.runs) }),
-      el('td', { class: 'conf', text: c.configuration }))));
-    $('elites').dataset.iteration = latest ? String(latest.iteration) : '';
-    // Convergence: the best elite's mean score at the end of each race.
-    const xs = [];
-    const ys = [];
-    for (const r of finished) {
-      const best = members(r).get(r.elites[0]);
-      if (best) { xs.push(r.iteration); ys.push(best.mean_score); }
-    }
-    if (!plot) plot = linePlot($('convergence-plot'), { xLabel: 'iteration', yLabel: 'best elite mean score', height: 200, points: true });
-    plot.setData(xs, ys);
+    $('design-info').textContent = `Design #${design.id}: ${startedWith(design)}`;
+    renderElites(progress.elites || []);
+    // Convergence: the best elite's mean over all its runs at the end of each iteration.
+    const points = s.convergence || [];
+    if (!plot) plot = linePlot($('convergence-plot'), { xLabel: 'iteration', yLabel: 'best elite mean', height: 200, points: true, integerX: true });
+    plot.setData(points.map((p) => p.iteration), points.map((p) => p.best_score));
+    showConvergence(points.length > 0);
 
     const best = (progress.best && progress.best.configuration) || design.best_configuration;
     const score = (progress.best && progress.best.mean_score) ?? design.best_score;
-    $('best-score').textContent = best ? `mean score ${score} (${directionOf(design.mission)})` : 'no configuration yet';
-    $('watch-best').disabled = !best;
-    $('watch-best').dataset.text = best || '';
-    $('watch-best').dataset.mission = design.mission || '';
+    const runs = progress.best ? ` over ${progress.best.runs} runs` : '';
+    $('best-score').replaceChildren(...(best
+      ? [document.createTextNode('mean score '), scoreSpan(el, score, { testid: 'best-mean' }), document.createTextNode(`${runs} (${directionOf(design.mission)})`)]
+      : [document.createTextNode('no configuration yet')]));
+    for (const id of ['watch-best', 'edit-best']) {
+      $(id).disabled = !best;
+      $(id).dataset.text = best || '';
+      $(id).dataset.mission = design.mission || '';
+    }
     if (best && best !== bestDrawn) {
       bestDrawn = best;
       api('/api/parse', { body: { text: best }, quiet: true })
         .then((answer) => { if (bestDrawn === best) { renderModel(graph, answer.software, { relayout: true }); graph.fit(undefined, 10); } })
         .catch(() => {});
     }
+  }
+
+  function showConvergence(any) {
+    $('convergence-plot').hidden = !any;
+    $('convergence-empty').hidden = any;
+  }
+
+  /// An interrupted (or failed) design resumes with what it was started with, whatever the form
+  /// says, unless the user gives it up (fresh): the button and a note say which will happen.
+  function showResumable(design) {
+    const resumable = !!design && (design.state === 'interrupted' || design.state === 'failed');
+    const fresh = $('design-fresh').checked;
+    $('design-resume').hidden = !resumable;
+    $('design-resume-text').textContent = resumable
+      ? `Design #${design.id} is ${design.state}: Start resumes it as it was started (${startedWith(design)}). ` : '';
+    $('design-start').textContent = resumable && !fresh ? `Resume design #${design.id}` : 'Start design';
+    if (!resumable) $('design-fresh').checked = false;
+  }
+
+  function renderElites(elites, empty = 'none yet: the first race is under way') {
+    $('elites').tBodies[0].replaceChildren(...elites.map((c) => el('tr', { testid: `elite-${c.id}` },
+      el('td', { text: String(c.id) }), el('td', {}, scoreSpan(el, c.mean_score, { class: 'elite-mean' })),
+      el('td', { class: 'elite-runs', text: String(c.runs) }), el('td', { class: 'conf', text: c.configuration }))));
+    if (!elites.length) $('elites').tBodies[0].append(el('tr', {}, el('td', { colspan: '4', class: 'muted small', text: empty })));
   }
 
   async function poll() {
@@ -138,7 +182,8 @@ export function initMonitor({ onWatch, missions }) {
       status = s;
       renderStatus(s);
       running = !!(s.design && s.design.state === 'running') || (s.experiments || []).some((e) => e.state === 'running');
-      if (s.design && was && was !== s.design.state) refreshDesigns();
+      const stale = s.design ? !listed || listed.id !== s.design.id || listed.state !== s.design.state : listed !== null;
+      if (stale || (s.design && was && was !== s.design.state)) refreshDesigns();
     } catch (e) {
       $('design-state').textContent = e.message;
     }
@@ -157,11 +202,23 @@ export function initMonitor({ onWatch, missions }) {
   });
   $('design-start').addEventListener('click', async () => {
     if (!selected) return;
-    try { await api(`/api/projects/${encodeURIComponent(selected)}/designs`, { body: {} }); } catch { return; }
+    const name = selected;
+    const resume = !$('design-resume').hidden && !$('design-fresh').checked;
+    try {
+      const budget = form.budget();
+      if (!resume && budget !== '' && budget !== String(projectBudgets.get(name) ?? '')) {
+        const project = await api(`/api/projects/${encodeURIComponent(name)}/budget`, { body: { budget } });
+        projectBudgets.set(name, project.budget);
+      }
+      const body = resume ? {} : { ...form.request(), fresh: $('design-fresh').checked };
+      await api(`/api/projects/${encodeURIComponent(name)}/designs`, { body });
+    } catch { return; }
     fastUntil = Date.now() + 10000;
     refreshDesigns();
+    refreshProjects().catch(() => {});  // the budget the form may have set
     poll();
   });
+  $('design-fresh').addEventListener('change', () => { if (status) showResumable(status.design); });
   $('design-stop').addEventListener('click', async () => {
     if (!selected) return;
     try { await api(`/api/projects/${encodeURIComponent(selected)}/designs/stop`, { body: {} }); } catch { /* shown */ }
@@ -172,6 +229,10 @@ export function initMonitor({ onWatch, missions }) {
     const b = $('watch-best');
     if (b.dataset.text) onWatch(b.dataset.text, b.dataset.mission);
   });
+  $('edit-best').addEventListener('click', () => {
+    const b = $('edit-best');
+    if (b.dataset.text) onEdit(b.dataset.text);
+  });
 
   return {
     setMissions(list) {
@@ -180,5 +241,7 @@ export function initMonitor({ onWatch, missions }) {
     shown() { visible = true; refreshProjects().catch(() => {}); graph.resize(); },
     hidden() { visible = false; },
     select,
+    get status() { return status; },
+    convergence() { return plot ? { xs: [...plot.plot.data[0]], ticks: plot.xTicks() } : null; },
   };
 }

@@ -45,6 +45,7 @@ export function parameterFields(kind, module, onChange) {
   const spec = findModule(kind, module.id);
   const box = el('div', { class: 'params' });
   if (!spec) return box;
+  box.append(el('div', { class: `flavour-badge flavour-${spec.flavour}`, testid: 'module-flavour', text: `flavour: ${spec.flavour}` }));
   if (!spec.parameters.length) box.append(el('p', { class: 'muted small', text: 'no parameters' }));
   for (const p of spec.parameters) {
     if (!parameterActive(p, module.parameters)) continue;

@@ -174,3 +174,35 @@ export function describeIndex(model, index) {
   }
   return `${index}`;
 }
+
+/// Each tree node's name in the configuration string: the root is `root`, child c of the root
+/// `n{c}`, child d of `n{c}` `n{c}{d}` (bt_config.cpp's numbering), by model index.
+export function btNodeNames(model) {
+  const names = [];
+  if (!model || model.architecture !== 'bt' || !model.nodes.length) return names;
+  names[0] = 'root';
+  const walk = (index, path) => {
+    (model.nodes[index].children || []).forEach((child, c) => {
+      const name = `${path}${c}`;
+      if (names[child] === undefined) { names[child] = `n${name}`; walk(child, name); }
+    });
+  };
+  walk(0, '');
+  return names;
+}
+
+/// The flavours whose modules a MODEL uses, in catalogue order.
+export function flavoursUsed(model, catalogue) {
+  if (!model || !catalogue) return [];
+  const ids = [];
+  if (model.architecture === 'fsm') {
+    for (const s of model.states) {
+      ids.push(['behaviour', s.behaviour.id]);
+      for (const t of s.transitions) ids.push(['condition', t.condition.id]);
+    }
+  } else if (model.architecture === 'bt') {
+    for (const n of model.nodes) if (n.module) ids.push([n.type === 'action' ? 'behaviour' : 'condition', n.module.id]);
+  }
+  const used = new Set(ids.map(([kind, id]) => (findModule(kind, id) || {}).flavour).filter(Boolean));
+  return catalogue.flavours.map((f) => f.name).filter((name) => used.has(name));
+}

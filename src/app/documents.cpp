@@ -62,6 +62,9 @@ json stored_progress_document(const storage::DesignProgress& p) {
            {"race_configurations", p.race_configurations},
            {"configurations_sampled", p.configurations_sampled},
            {"best", p.best ? configuration_score(*p.best) : json()}};
+  json elites = json::array();  // each over all its runs, as "best" (the race log's means are per race)
+  for (const auto& e : p.elites) elites.push_back(configuration_score(e));
+  out["elites"] = elites;
   if (!p.finish_reason.empty()) out["finish_reason"] = p.finish_reason;
   return out;
 }
@@ -81,6 +84,13 @@ json race_log_document(const std::vector<storage::RaceRecord>& log) {
                      {"configurations", members}, {"elites", r.elites}});
   }
   return races;
+}
+
+json convergence_document(const std::vector<storage::ConvergencePoint>& points) {
+  json out = json::array();
+  for (const auto& p : points)
+    out.push_back({{"iteration", p.iteration}, {"runs_used", p.runs_used}, {"best_id", p.best_id}, {"best_score", p.best_score}});
+  return out;
 }
 
 json design_row_document(const storage::Design& d) {

@@ -23,6 +23,8 @@ nlohmann::json progress_document(const design::Progress& progress, bool maximise
 /// A design's progress as read from its design.db (status).
 nlohmann::json stored_progress_document(const storage::DesignProgress& progress);
 nlohmann::json race_log_document(const std::vector<storage::RaceRecord>& log);
+/// [{"iteration","runs_used","best_id","best_score"}]: the best elite's mean over all its runs so far.
+nlohmann::json convergence_document(const std::vector<storage::ConvergencePoint>& points);
 nlohmann::json design_row_document(const storage::Design& design);
 
 nlohmann::json project_document(const storage::Project& project);

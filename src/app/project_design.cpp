@@ -114,7 +114,10 @@ DesignStatus design_status(Home& home, const storage::User& user, bool complete,
   try {
     if (std::filesystem::exists(storage::DesignStore::file_in(d.folder))) {
       status.progress = storage::read_design_progress(d.folder);
-      if (complete) status.race_log = storage::read_race_log(d.folder);
+      if (complete) {
+        status.race_log = storage::read_race_log(d.folder);
+        status.convergence = storage::read_convergence(d.folder);
+      }
     }
   } catch (const storage::DesignFolderError&) {
     // A design that has just started may not have committed its tables yet.
@@ -129,7 +132,10 @@ nlohmann::json status_document(const DesignStatus& status, bool complete) {
                      {"design", design_row_document(*status.design)},
                      {"progress", stored_progress_document(status.progress)}};
   if (status.cluster_job) out["cluster_job"] = cluster_job_document(*status.cluster_job);
-  if (complete) out["race_log"] = race_log_document(status.race_log);
+  if (complete) {
+    out["race_log"] = race_log_document(status.race_log);
+    out["convergence"] = convergence_document(status.convergence);
+  }
   return out;
 }
 

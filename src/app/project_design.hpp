@@ -61,6 +61,7 @@ struct DesignStatus {
   std::optional<storage::Design> design;
   storage::DesignProgress progress;
   std::vector<storage::RaceRecord> race_log;  // with `complete`
+  std::vector<storage::ConvergencePoint> convergence;  // with `complete`: the best elite per iteration
   std::optional<storage::ClusterJob> cluster_job;  // a cluster project's design: its Slurm job
 };
 DesignStatus design_status(Home& home, const storage::User& user, bool complete,

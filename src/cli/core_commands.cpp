@@ -14,6 +14,7 @@
 #include "cli/control_software_input.hpp"
 #include "cli/score_output.hpp"
 #include "control/describe.hpp"
+#include "evaluation/svg_frames.hpp"
 #include "missions/catalogue.hpp"
 #include "missions/svg.hpp"
 
@@ -77,7 +78,8 @@ void register_mission_show(CLI::App& app) {
 void register_evaluate(CLI::App& app, Context& context) {
   auto* cmd = app.add_subcommand("evaluate", "Simulate control software on a mission and print its score per seed");
   struct Options {
-    std::string mission, seeds, trace;
+    std::string mission, seeds, trace, render;
+    int render_every = 10;
     std::uint64_t seed = 1;
     int threads = 0;
     bool json = false;
@@ -89,18 +91,29 @@ void register_evaluate(CLI::App& app, Context& context) {
   cmd->add_option("--seeds", o->seeds, "Range of seeds A-B; also prints mean and median")->excludes(seed);
   cmd->add_option("--threads", o->threads, "Worker threads for --seeds (default: all cores)")->check(CLI::NonNegativeNumber);
   cmd->add_option("--trace", o->trace, "Write every tick's poses, LEDs and running objective to FILE (CSV)");
+  auto* render = cmd->add_option("--render", o->render,
+                                  "Write the run as SVG frames DIR/frame-TTTTT.svg (arena, robots, tick and objective)");
+  cmd->add_option("--render-every", o->render_every, "Ticks between two --render frames (default 10: one a second)")
+      ->check(CLI::PositiveNumber)
+      ->needs(render);
   cmd->add_flag("--json", o->json, "Print one JSON document");
   add_control_software_options(*cmd, o->software);
   cmd->footer(
       "The control software ends the command line.\n"
-      "Example: swarmdesign evaluate --mission aac --seeds 1-20 --fsm-config --nstates 1 --s0 10 --rwm0 50");
+      "Example: swarmdesign evaluate --mission aac --seeds 1-20 --fsm-config --nstates 1 --s0 10 --rwm0 50\n"
+      "A video from --render frames: ffmpeg -framerate 10 -pattern_type glob -i 'DIR/*.svg' run.webm");
   cmd->callback([o, &context] {
     const Mission mission = app::load_requested_mission(o->mission);
     const ControlSoftware software = read_control_software(context, o->software);
     const std::vector<std::uint64_t> seeds =
         o->seeds.empty() ? std::vector<std::uint64_t>{o->seed} : app::parse_seed_range(o->seeds);
     if (!o->trace.empty() && seeds.size() != 1) throw UsageError("--trace records one run: use it with --seed");
-    if (!o->trace.empty())
+    if (!o->render.empty() && (seeds.size() != 1 || !o->trace.empty()))
+      throw UsageError("--render draws one run: use it with --seed, without --trace");
+    if (!o->render.empty()) {
+      SvgFrameWriter frames(mission, o->render, o->render_every);
+      print_scores(mission, software, seeds, {app::observed_run(mission, software, seeds[0], frames)}, o->json);
+    } else if (!o->trace.empty())
       print_scores(mission, software, seeds, {app::traced_run(mission, software, seeds[0], o->trace)}, o->json);
     else
       score_and_print(mission, software, seeds, o->threads, o->json);

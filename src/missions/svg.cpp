@@ -1,5 +1,7 @@
 #include "missions/svg.hpp"
 
+#include "missions/svg_layers.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <sstream>
@@ -9,6 +11,8 @@
 namespace sd {
 
 namespace {
+
+constexpr const char* kOutsideColor = "#eef1f5";  // svg.hpp: no floor is this colour
 
 std::string rgb_text(std::uint32_t rgb) {
   char buffer[8];
@@ -90,41 +94,76 @@ std::vector<std::string> describe_random_events(const Mission& m) {
   return lines;
 }
 
+constexpr std::size_t kCaptionChars = 44;  // per caption line, so that it fits the drawing's width
+
+/// Text broken at spaces into lines of at most `width` characters (a longer word keeps its line).
+std::vector<std::string> wrapped(const std::string& text, std::size_t width) {
+  std::vector<std::string> lines;
+  std::istringstream words(text);
+  std::string line;
+  for (std::string word; words >> word;) {
+    if (!line.empty() && line.size() + 1 + word.size() > width) {
+      lines.push_back(line);
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+  }
+  if (!line.empty()) lines.push_back(line);
+  return lines;
+}
+
 }  // namespace
 
 std::string mission_svg(const Mission& m) {
-  // Bounds: walls, patches, start region and lights, with a margin.
-  Vec2 lo{-0.5, -0.5}, hi{0.5, 0.5};
+  // Bounds: the arena's walls (the floor beyond them is not drawn), start region, jail and
+  // lit lights, with a small margin; without walls, the floor patches and at least 1 m square.
+  const std::vector<Vec2> outline = arena_outline(m);
+  Vec2 lo{1e9, 1e9}, hi{-1e9, -1e9};
   auto grow = [&](Vec2 a, Vec2 b) {
     lo = {std::min(lo.x, a.x), std::min(lo.y, a.y)};
     hi = {std::max(hi.x, b.x), std::max(hi.y, b.y)};
   };
-  for (const Wall& w : m.arena.walls) {
-    const double r = w.bounding_radius();
-    grow(w.center - Vec2{r, r}, w.center + Vec2{r, r});
+  for (const Vec2 p : outline) grow(p, p);
+  if (outline.empty()) {
+    grow({-0.5, -0.5}, {0.5, 0.5});
+    for (const FloorPatch& p : m.arena.floor_patches) grow(p.region.bounds().first, p.region.bounds().second);
   }
-  for (const FloorPatch& p : m.arena.floor_patches) grow(p.region.bounds().first, p.region.bounds().second);
   grow(m.start.bounds().first, m.start.bounds().second);
   if (m.arrest) grow(m.arrest->jail.bounds().first, m.arrest->jail.bounds().second);
-  for (const Light& l : m.arena.lights) grow(l.position.xy(), l.position.xy());
-  lo = lo - Vec2{0.15, 0.15};
-  hi = hi + Vec2{0.15, 0.15};
+  for (const Light& l : m.arena.lights)  // an unlit light is not drawn: it must not widen the picture
+    if (l.intensity > 0) grow(l.position.xy(), l.position.xy());
+  const double margin = 0.04 * std::max(hi.x - lo.x, hi.y - lo.y);
+  lo = lo - Vec2{margin, margin};
+  hi = hi + Vec2{margin, margin};
 
-  const std::vector<std::string> captions = describe_random_events(m);
-  constexpr double kLine = 0.08;  // caption line height, m
+  std::vector<std::string> captions;
+  for (const std::string& event : describe_random_events(m))
+    for (std::string& l : wrapped(event, kCaptionChars)) captions.push_back(std::move(l));
+  const double line = (hi.x - lo.x) / 18;  // caption line height: readable at any arena size
   std::ostringstream out;
-  const double width = hi.x - lo.x, height = hi.y - lo.y + kLine * static_cast<double>(captions.size());
+  const double width = hi.x - lo.x, height = hi.y - lo.y + line * static_cast<double>(captions.size());
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << static_cast<int>(width * 250) << "\" height=\""
       << static_cast<int>(height * 250) << "\" viewBox=\"" << lo.x << " " << -hi.y << " " << width << " " << height
       << "\">\n";
   out << "<title>" << xml_text(m.title) << " (" << xml_text(m.name) << ")</title>\n";
+  // Outside the arena: a neutral colour that no floor has.
+  out << "<rect class=\"outside\" x=\"" << lo.x << "\" y=\"" << -hi.y << "\" width=\"" << width << "\" height=\"" << height
+      << "\" fill=\"" << kOutsideColor << "\"/>\n";
   // The world's y axis points up; SVG's points down.
   out << "<g transform=\"scale(1 -1)\">\n";
-  out << "<rect x=\"" << lo.x << "\" y=\"" << lo.y << "\" width=\"" << width << "\" height=\"" << height
+  if (!outline.empty()) {
+    out << "<clipPath id=\"arena\"><polygon points=\"";
+    for (const Vec2 p : outline) out << p.x << "," << p.y << " ";
+    out << "\"/></clipPath>\n";
+  }
+  out << "<g class=\"floor\"" << (outline.empty() ? "" : " clip-path=\"url(#arena)\"") << ">\n";
+  out << "<rect x=\"" << lo.x << "\" y=\"" << lo.y << "\" width=\"" << width << "\" height=\"" << hi.y - lo.y
       << "\" fill=\"" << rgb_text(m.arena.floor_background_rgb) << "\"/>\n";
   // Patches are drawn last-first so that the first matching patch ends on top, as it wins.
   for (auto it = m.arena.floor_patches.rbegin(); it != m.arena.floor_patches.rend(); ++it)
     out << region_element(it->region, "class=\"patch\" fill=\"" + rgb_text(it->rgb) + "\"") << "\n";
+  out << objective_layer(m, lo, hi) << "\n";
+  out << "</g>\n";
   out << region_element(m.start, "class=\"start\" fill=\"none\" stroke=\"#1f77b4\" stroke-width=\"0.012\" stroke-dasharray=\"0.04 0.03\"")
       << "\n";
   if (m.arrest)  // where the Coconut arrest rule sends robots that leave
@@ -149,8 +188,8 @@ std::string mission_svg(const Mission& m) {
   out << "</g>\n";
   for (std::size_t i = 0; i < captions.size(); ++i)
     // Text drawn at 1000x and scaled down: renderers hint tiny font sizes badly.
-    out << "<text class=\"caption\" transform=\"translate(" << lo.x + 0.05 << " " << -lo.y + kLine * (static_cast<double>(i) + 0.75)
-        << ") scale(0.001)\" font-family=\"sans-serif\" font-size=\"45\">" << xml_text(captions[i]) << "</text>\n";
+    out << "<text class=\"caption\" transform=\"translate(" << lo.x + 0.3 * line << " " << -lo.y + line * (static_cast<double>(i) + 0.75)
+        << ") scale(0.001)\" font-family=\"sans-serif\" font-size=\"" << line * 650 << "\">" << xml_text(captions[i]) << "</text>\n";
   out << "</svg>\n";
   return out.str();
 }

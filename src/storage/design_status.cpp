@@ -83,8 +83,9 @@ DesignProgress read_design_progress(const std::filesystem::path& folder) {
   p.finish_reason = state.at("finish_reason").get<std::string>();
   const json& elites = state.at("elites");
   const json& race = state.at("race");
+  for (const json& elite : elites) p.elites.push_back(configuration_score(s, elite.at(0).get<int>()));
   if (!elites.empty()) {
-    p.best = configuration_score(s, elites.at(0).at(0).get<int>());
+    p.best = p.elites.front();
   } else if (!race.is_null() && race.at("next_task").get<std::size_t>() > 1) {
     p.best = configuration_score(s, race.at("config_ids").at(race.at("best").get<std::size_t>()).get<int>());
   }

@@ -28,6 +28,7 @@ struct DesignProgress {
   std::int64_t configurations_sampled = 0;
   std::optional<ConfigurationScore> best;  // best elite, or the current race's leader before any
   std::string finish_reason;
+  std::vector<ConfigurationScore> elites;  // the current elites, best first, each over all its runs
 };
 
 struct RaceMember {

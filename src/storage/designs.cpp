@@ -59,6 +59,18 @@ std::string to_string(DesignState state) {
   return "running";
 }
 
+namespace {
+
+/// Reading must not need the write lock: a dead "running" design is reported interrupted, the
+/// same by latest() and list() (a list and a status box never disagree).
+Design as_reported(Design design) {
+  if (design.state == DesignState::running && !owner_alive(design.owner, design.heartbeat_at, unix_now(), design.pid))
+    design.state = DesignState::interrupted;
+  return design;
+}
+
+}  // namespace
+
 Designs::Designs(Workspace& workspace, Project project) : workspace_(workspace), project_(std::move(project)) {}
 
 void Designs::mark_dead_designs_interrupted() {
@@ -186,18 +198,14 @@ std::optional<Design> Designs::latest() {
   auto query = workspace_.database().prepare(std::string(kSelectDesigns) + "ORDER BY id DESC LIMIT 1");
   query.bind(1, project_.id);
   if (!query.step()) return std::nullopt;
-  Design design = read_design(query, workspace_);
-  // Reading must not need the write lock: report a dead "running" design as interrupted.
-  if (design.state == DesignState::running && !owner_alive(design.owner, design.heartbeat_at, unix_now(), design.pid))
-    design.state = DesignState::interrupted;
-  return design;
+  return as_reported(read_design(query, workspace_));
 }
 
 std::vector<Design> Designs::list() {
   std::vector<Design> designs;
   auto query = workspace_.database().prepare(std::string(kSelectDesigns) + "ORDER BY id");
   query.bind(1, project_.id);
-  while (query.step()) designs.push_back(read_design(query, workspace_));
+  while (query.step()) designs.push_back(as_reported(read_design(query, workspace_)));
   return designs;
 }
 

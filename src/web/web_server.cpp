@@ -62,6 +62,7 @@ WebServer::WebServer(WebServerOptions options)
   add_run_routes(routes);
   add_project_routes(routes);
   add_experiment_routes(routes);
+  add_design_form_routes(routes);
 }
 
 WebServer::~WebServer() {

@@ -71,6 +71,29 @@ TEST(Cli, TraceHasARowPerRobotPerTickAndEndsOnTheScore) {
   std::filesystem::remove(path);
 }
 
+TEST(Cli, RenderWritesAnSvgFrameEveryNTicksWithEveryRobotAndTheSameScore) {
+  const auto folder = std::filesystem::temp_directory_path() / "sd_render_test";
+  std::filesystem::remove_all(folder);
+  const Result plain = run("evaluate --mission aac --seed 4" + kRandomWalk);
+  const Result r = run("evaluate --mission aac --seed 4 --render " + folder.string() + " --render-every 100" + kRandomWalk);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, plain.out);  // drawing the run does not change it
+  int frames = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) frames += entry.path().extension() == ".svg";
+  EXPECT_EQ(frames, 13);  // ticks 0, 100, ..., 1200
+  std::ifstream in(folder / "frame-01200.svg");
+  std::stringstream svg;
+  svg << in.rdbuf();
+  const std::string text = svg.str();
+  const std::string robots = text.substr(text.find("class=\"robots\""));
+  int circles = 0;
+  for (std::size_t at = robots.find("<circle"); at != std::string::npos; at = robots.find("<circle", at + 1)) ++circles;
+  EXPECT_EQ(circles, 20);
+  EXPECT_NE(text.find("tick 1200 / 1200"), std::string::npos);
+  EXPECT_EQ(run("evaluate --mission aac --seeds 1-2 --render " + folder.string() + kRandomWalk).status, 2);
+  std::filesystem::remove_all(folder);
+}
+
 TEST(Cli, MalformedInputGetsOneLineErrorsAndExitStatusTwo) {
   struct Case {
     std::string args, needle;
@@ -111,7 +134,10 @@ TEST(Cli, MissionsListAndShowWithADrawing) {
   buffer << in.rdbuf();
   const std::string content = buffer.str();
   EXPECT_EQ(content.rfind("<svg", 0), 0u);
-  EXPECT_EQ(std::count(content.begin(), content.end(), '<'), 1 + 1 + 1 + 1 + 2 + 1 + 12 + 1 + 2 + 1) << content;
+  // svg, title and its end, the outside, the y-up group, the arena's clip path (3 tags), the
+  // floor group with its background, 2 patches and the objective's zone and its end, the start
+  // region, 12 walls, the light, the group's end, the svg's end.
+  EXPECT_EQ(std::count(content.begin(), content.end(), '<'), 1 + 2 + 1 + 1 + 3 + 1 + 1 + 2 + 1 + 1 + 1 + 12 + 1 + 1 + 1) << content;
   std::filesystem::remove(svg);
 }
 

@@ -112,6 +112,18 @@ TEST_F(workflow_designs, ADeadRunningDesignDoesNotBlockANewOne) {
   EXPECT_EQ(designs.list().front().state, storage::DesignState::interrupted);
 }
 
+TEST_F(workflow_designs, TheListAndTheLatestDesignReportADeadDesignTheSameWay) {
+  // A server killed with a design running: its row still says "running" until something
+  // writes; reading it, the list and the latest design both say interrupted (the web page shows
+  // both side by side).
+  storage::Designs designs(workspace(), project("p"));
+  const auto killed = designs.start(request(owner_of(kDeadPid)));
+  EXPECT_EQ(designs.latest()->state, storage::DesignState::interrupted);
+  ASSERT_EQ(designs.list().size(), 1u);
+  EXPECT_EQ(designs.list().front().id, killed.id);
+  EXPECT_EQ(designs.list().front().state, storage::DesignState::interrupted);
+}
+
 TEST_F(workflow_designs, AnOwnerOnThisMachineLivesAsLongAsItsProcess) {
   storage::Designs designs(workspace(), project("p"));
   const auto design = designs.start(request(me()));
