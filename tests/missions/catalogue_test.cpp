@@ -15,6 +15,7 @@
 #include "evaluation/simulation.hpp"
 #include "missions/catalogue.hpp"
 #include "missions/svg.hpp"
+#include "simulator/robot_model.hpp"
 #include "simulator/epuck.hpp"
 #include "workflow/swarmdesign_process.hpp"
 
@@ -84,6 +85,14 @@ TEST(Catalogue, DurationsAreThoseOfSpecReadme) {
     EXPECT_EQ(m.duration_s, expected) << name;
     EXPECT_EQ(m.ticks, static_cast<int>(expected * 10)) << name;
   }
+}
+
+TEST(Catalogue, RabRangeIsTheScenarioFilesActuatorRange) {
+  // argos3-epuck reads the actuator's range: 0.5 in TuttiFrutti's scenario files, 0.7 in the
+  // Chocolate, Vanilla/Maple, Coconut and Arlequin ones; 0.8 only for a file that gives none.
+  for (const auto& [name, e] : expected_catalogue())
+    EXPECT_EQ(load_mission(name).robot.rab_range, name.rfind("tutti-", 0) == 0 ? 0.5 : 0.7) << name;
+  EXPECT_EQ(RobotModel{}.rab_range, 0.8);
 }
 
 TEST(Catalogue, EveryMissionEvaluatesARandomWalkWithinItsBounds) {
