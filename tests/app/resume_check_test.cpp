@@ -13,7 +13,7 @@ TEST(ResumeCheck, RunsOfThisVersionGoOnWhateverTheSwarm) {
 }
 
 TEST(ResumeCheck, Versions3And4NoLongerGoOn) {
-  // Version 5 changed the RAB range of the catalogue's missions, whatever the swarm.
+  // Version 5 changed the RAB range of the catalogue's missions and Coconut, whatever the swarm.
   static_assert(kResultsVersion == 5, "a new version decides anew which older runs it reproduces");
   for (int version : {3, 4})
     for (int robots : {20, 362, 1000}) EXPECT_NE(results_version_refusal("the design", version, robots), "") << version;
