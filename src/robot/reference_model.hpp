@@ -31,7 +31,7 @@ struct ReferenceModel {
   double ground_rm3 = 0.5;
   // Demiurge's RM3.0 (the Coconut and Arlequin code base, AmmarHsn/demiurge-epuck-dao): the
   // last 10 steps (30 readings); black if more than 8 are below 0.02, else white if more than
-  // 8 are above 0.97, else gray. Its floor conditions read it.
+  // 8 are above 0.97, else gray. The Coconut and Arlequin floor conditions read it.
   double ground_demiurge = 0.5;
   // The two vectors keep their last value at a step that does not read them.
   Vec2 proximity;               // sum of proximity vectors, length clipped to 1 (RM1.2 Pv)
