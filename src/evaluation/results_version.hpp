@@ -13,8 +13,8 @@
 //      pushed the wrong pairs. Up to 362 robots every score was version 3's, bit for bit.
 //   5: the catalogue's missions hear neighbours within their scenario files' RAB range, 0.7 m
 //      (argos3-epuck reads the actuator's `range`), and Coconut as Demiurge runs it: its RM3.0
-//      floor filter (10 steps), behaviours 32-35 keeping their counters across states, grid
-//      exploration scored / 1000 (December 2026).
+//      floor filter (10 steps; Arlequin's floor conditions too), behaviours 32-35 keeping their
+//      counters across states, grid exploration scored / 1000 (December 2026).
 //      Versions 3 and 4 score the catalogue's missions differently, so none of their runs go on.
 namespace sd {
 
