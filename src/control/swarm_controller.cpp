@@ -78,7 +78,7 @@ inline Actuation SwarmController::step_fsm(int robot, const ReferenceModel& rm, 
   const auto current = static_cast<std::size_t>(current_[r]);
   const FsmState& state = software_->fsm.states[current];
   BehaviourMemory& memory = memory_[r * static_cast<std::size_t>(slots_) + current];
-  if (entering_[r]) reset_behaviour(memory);
+  if (entering_[r] && resets_on_state_entry(state.behaviour.id)) reset_behaviour(memory);
   const Actuation actuation = run_behaviour(state.behaviour, memory, rm, rng);
   if (entering_[r]) {
     entering_[r] = 0;

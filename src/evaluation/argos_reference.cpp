@@ -25,6 +25,9 @@ const std::vector<ArgosReferenceGroup>& argos_reference_groups() {
       {"tutti_aggregation", "argos-reference-3.csv", "tutti-aggregation", "fsm", "tutti-aggregation", 0, false},
       {"tutti_stop", "argos-reference-3.csv", "tutti-stop", "fsm", "tutti-stop", 0, false},
       {"tutti_foraging", "argos-reference-3.csv", "tutti-foraging", "fsm", "tutti-foraging", 0, false},
+      {"grid_exploration", "argos-reference-5.csv", "grid-exploration", "fsm", "grid-exploration", 0, false},
+      {"coconut_aggregation", "argos-reference-5.csv", "coconut-aggregation", "fsm", "coconut-aggregation", 0, false},
+      {"coconut_foraging", "argos-reference-5.csv", "coconut-foraging", "fsm", "coconut-foraging", 0, false},
   };
   return groups;
 }

@@ -10,18 +10,18 @@
 //      adds after placement, Maple's own module laws, the TuttiFrutti scenarios' RAB range,
 //      the camera's square field and RM3.0's ground filter
 //   4: pair indices of 32 bits (December 2026): with more than 362 robots, version 3 sensed and
-//      pushed the wrong pairs. Up to 362 robots every score is version 3's, bit for bit, so
-//      runs of version 3 on such swarms go on.
+//      pushed the wrong pairs. Up to 362 robots every score was version 3's, bit for bit.
+//   5: the catalogue's missions hear neighbours within their scenario files' RAB range, 0.7 m
+//      (argos3-epuck reads the actuator's `range`), and Coconut as Demiurge runs it: its RM3.0
+//      floor filter (10 steps; Arlequin's floor conditions too), behaviours 32-35 keeping their
+//      counters across states, grid exploration scored / 1000 (December 2026).
+//      Versions 3 and 4 score the catalogue's missions differently, so none of their runs go on.
 namespace sd {
 
-inline constexpr int kResultsVersion = 4;
+inline constexpr int kResultsVersion = 5;
 
-/// The largest swarm that version 3 scored as this build does.
-inline constexpr int kVersion3ScoredRightUpToRobots = 362;
-
-/// True if runs kept under `version` score as this build's for a swarm of `robots`.
-constexpr bool scores_as_this_build(int version, int robots) {
-  return version == kResultsVersion || (version == 3 && robots <= kVersion3ScoredRightUpToRobots);
-}
+/// True if runs kept under `version` score as this build's for a swarm of `robots` (a new
+/// version may keep older runs that it scores alike; version 5 keeps none).
+constexpr bool scores_as_this_build(int version, [[maybe_unused]] int robots) { return version == kResultsVersion; }
 
 }  // namespace sd

@@ -7,11 +7,12 @@
 namespace sd {
 
 GridExplorationObjective read_grid_exploration(const Field& f) {
-  f.only({"type", "direction", "center", "side", "cells"});
+  f.only({"type", "direction", "center", "side", "cells", "scale"});
   GridExplorationObjective o;
   o.center = f.at("center").vec2();
   o.side = f.at("side").positive();
   o.cells = f.at("cells").integer_in(1, 1000);
+  o.scale = f.positive_or("scale", 1.0);
   return o;
 }
 

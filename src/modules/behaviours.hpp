@@ -64,6 +64,10 @@ Actuation exploration(double rwm, double obstacle_squared_reading, BehaviourMemo
 inline constexpr double kChocolateObstacleSquaredReading = 0.01;
 
 void reset_behaviour(BehaviourMemory& memory);
+/// Whether entering a state resets its behaviour's memory. Demiurge's Coconut behaviours 32-35
+/// keep their random-turn or random-walk counter and angle for the whole run (only
+/// Exploration's Reset re-initialises them); every other behaviour starts afresh.
+constexpr bool resets_on_state_entry(int behaviour_id) { return behaviour_id < 32 || behaviour_id > 35; }
 /// Loads what a behaviour reads at every step (an Arlequin module's shipped network) before
 /// the run, so that no step parses or allocates, and a missing network fails up front.
 void prepare_behaviour(const ModuleInstance& behaviour);

@@ -42,12 +42,19 @@ bool check_condition(const ModuleInstance& c, const ReferenceModel& rm, Rng& rng
   // Every flavour's conditions 0-5 are Chocolate's. The ids are listed rather than taken
   // modulo 10: conditions are checked for every robot at every step.
   switch (c.id) {
-    case 10: case 30: case 40: case 50:  // BlackFloor
+    case 10: case 40:  // BlackFloor
       return rm.ground <= 0.1 && rng.bernoulli(prm[0]);
-    case 11: case 31: case 41: case 51:  // GrayFloor
+    case 11: case 41:  // GrayFloor
       return rm.ground > 0.1 && rm.ground < 0.95 && rng.bernoulli(prm[0]);
-    case 12: case 32: case 42: case 52:  // WhiteFloor
+    case 12: case 42:  // WhiteFloor
       return rm.ground >= 0.95 && rng.bernoulli(prm[0]);
+    // Coconut and Arlequin run on Demiurge's RM3.0, whose floor filter keeps 10 steps.
+    case 30: case 50:
+      return rm.ground_demiurge <= 0.1 && rng.bernoulli(prm[0]);
+    case 31: case 51:
+      return rm.ground_demiurge > 0.1 && rm.ground_demiurge < 0.95 && rng.bernoulli(prm[0]);
+    case 32: case 52:
+      return rm.ground_demiurge >= 0.95 && rng.bernoulli(prm[0]);
     // TuttiFrutti runs on RM3.0, whose floor filter has its own thresholds.
     case 20:
       return rm.ground_rm3 <= 0.1 && rng.bernoulli(prm[0]);

@@ -1,6 +1,6 @@
 #pragma once
 // Reference model RM1.2 (modules-and-grammar.md §2.2-2.3): how an AutoMoDe controller sees
-// its raw sensors. Per robot it keeps the 5-step ground history and the 11-step
+// its raw sensors. Per robot it keeps the 5- and 10-step ground histories and the 11-step
 // range-and-bearing message buffer, and it exposes the processed quantities the modules use.
 // Vectors are kept as vectors (never as angle + length) so the control step needs no trig.
 //
@@ -29,6 +29,10 @@ struct ReferenceModel {
   // conditions read. With RM1.x's 0.03 a noisy black floor (0 + U(-0.05, 0.05)) passes only
   // 80 % of samples, so a robot on black reads gray at about one step in six.
   double ground_rm3 = 0.5;
+  // Demiurge's RM3.0 (the Coconut and Arlequin code base, AmmarHsn/demiurge-epuck-dao): the
+  // last 10 steps (30 readings); black if more than 8 are below 0.02, else white if more than
+  // 8 are above 0.97, else gray. The Coconut and Arlequin floor conditions read it.
+  double ground_demiurge = 0.5;
   // The two vectors keep their last value at a step that does not read them.
   Vec2 proximity;               // sum of proximity vectors, length clipped to 1 (RM1.2 Pv)
   Vec2 light;                   // unit vector to the light if any sensor reads > 0.2, else 0
@@ -60,6 +64,10 @@ struct ReferenceModel {
   std::array<std::uint8_t, kGroundHistory> ground_black3{}, ground_white3{};  // RM3.0 thresholds
   int window_black3 = 0, window_white3 = 0;
   int ground_slot = 0;                        // the slot the next step overwrites
+  static constexpr int kDemiurgeGroundHistory = 10;
+  std::array<std::uint8_t, kDemiurgeGroundHistory> ground_black_demiurge{}, ground_white_demiurge{};
+  int window_black_demiurge = 0, window_white_demiurge = 0;
+  int ground_slot_demiurge = 0;
   // Per step of the buffer: the sums over that step's messages, so that a buffer sum adds
   // 11 terms, not every message.
   std::array<Vec2, kRabBufferSteps> rab_steps{};

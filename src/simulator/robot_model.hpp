@@ -4,7 +4,9 @@
 namespace sd {
 
 struct RobotModel {
-  double rab_range = 0.8;          // m; the EP plugin hard-codes 0.8 whatever the XML says
+  // m; argos3-epuck's RAB actuator reads the experiment file's `range` attribute, 0.8 when
+  // unset. The catalogue's missions set what their scenario files say (0.7, TuttiFrutti 0.5).
+  double rab_range = 0.8;
   double rab_loss = 0.85;          // probability a packet is dropped
   double wheel_noise = 0.05;       // std-dev of the multiplicative N(0, s) wheel noise
   double proximity_noise = 0.05;   // half-width of the additive uniform noise

@@ -128,6 +128,48 @@ TEST(ControlFsmExecution, BehaviourMemoryIsResetWhenAStateIsEntered) {
   EXPECT_EQ(a.right_cm, kFull);
 }
 
+/// Coconut behaviour `id` with exp 1 (a random turn of up to rwm = 100 steps); attraction and
+/// repulsion take att / rep 1 first.
+ModuleInstance coconut_random_turn(int id) { return id == 34 || id == 35 ? module(id, {1, 1, 100}) : module(id, {1, 100}); }
+
+/// Steps a lone Coconut behaviour `id` spins in place after seeing an obstacle on its right at
+/// the first step, with this seed.
+int coconut_spin_length(int id, std::uint64_t seed, const ReferenceModel& obstacle) {
+  const ControlSoftware alone = fsm({state(coconut_random_turn(id))});
+  SwarmController controller(alone, 1);
+  Rng rng(seed);
+  int spinning = controller.step(0, obstacle, rng).left_cm < 0.0 ? 1 : 0;
+  while (spinning < 200 && controller.step(0, quiet(), rng).left_cm < 0.0) ++spinning;
+  return spinning;
+}
+
+/// Whether Coconut behaviour `id` still spins when its state is entered again, two states
+/// after the spin began: 0 (id) --p=1--> 1 (Stop) --p=1--> 0.
+bool coconut_spins_on_reentry(int id, std::uint64_t seed, const ReferenceModel& obstacle) {
+  const ControlSoftware software = fsm({state(coconut_random_turn(id), {transition(1, module(35, {1.0}))}),
+                                        state(module(31), {transition(0, module(35, {1.0}))})});
+  SwarmController controller(software, 1);
+  Rng rng(seed);
+  EXPECT_LT(controller.step(0, obstacle, rng).left_cm, 0.0);  // enter 0: the spin starts
+  EXPECT_LT(controller.step(0, quiet(), rng).left_cm, 0.0);   // still spinning; leaves to 1
+  controller.step(0, quiet(), rng);                           // enter 1
+  controller.step(0, quiet(), rng);                           // back to 0
+  EXPECT_EQ(controller.current_state(0), 0);
+  return controller.step(0, quiet(), rng).left_cm < 0.0;
+}
+
+TEST(ControlFsmExecution, CoconutBehavioursOtherThanExplorationKeepTheirCounterAcrossStates) {
+  // Demiurge's Coconut: only Exploration (30) re-initialises its random-turn counter when its
+  // state is entered; phototaxis, anti-phototaxis, attraction and repulsion (32-35) keep it.
+  ReferenceModel obstacle_right;
+  obstacle_right.proximity = Vec2::polar(0.5, -kPi / 6.0);
+  // A seed whose spin lasts at least 6 steps, found (not assumed) with a lone behaviour.
+  std::uint64_t seed = 1;
+  while (coconut_spin_length(32, seed, obstacle_right) < 6) ++seed;
+  EXPECT_FALSE(coconut_spins_on_reentry(30, seed, obstacle_right)) << "Exploration starts afresh";
+  for (const int id : {32, 33, 34, 35}) EXPECT_TRUE(coconut_spins_on_reentry(id, seed, obstacle_right)) << id;
+}
+
 TEST(ControlFsmExecution, TwoCertainTransitionsAreTakenEquallyOften) {
   const ControlSoftware software = fsm(
       {state(module(11), {transition(1, module(15, {1.0})), transition(2, module(15, {1.0}))}), state(module(11)),

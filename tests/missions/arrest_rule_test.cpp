@@ -86,11 +86,11 @@ TEST(ArrestRule, TheTrackerArrestsBeforeScoring) {
   objective.post_step(s, 1, rng);
   // Tick 2: robot 0 has escaped to (1.0, 0.9), |p| = 1.35: inside the grid (cell (9, 8)) but
   // arrested first, so it visits no cell. Sum = 99 cells of age 1 (98 if it had been scored
-  // before the arrest).
+  // before the arrest); the mission scores sum / 1000.
   s.position[0] = {1.0, 0.9};
   objective.post_step(s, 2, rng);
   EXPECT_TRUE(in_jail(s.position[0]));
-  EXPECT_DOUBLE_EQ(objective.value(), 99.0 / 100.0);
+  EXPECT_DOUBLE_EQ(objective.value(), 99.0 / 1000.0);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "evaluation/simulation.hpp"
 #include "missions/catalogue.hpp"
 #include "missions/svg.hpp"
+#include "simulator/robot_model.hpp"
 #include "simulator/epuck.hpp"
 #include "workflow/swarmdesign_process.hpp"
 
@@ -30,7 +31,7 @@ struct Expectation {
 };
 const std::map<std::string, Expectation>& expected_catalogue() {
   // Grid exploration: the 4 corner cells of the 10 x 10 grid lie outside the dodecagon and
-  // add sum_{t=1..1200} (t - 1) / 100 = 7194 each at least; 100 never-visited cells add 719 400.
+  // add sum_{t=1..1200} (t - 1) / 1000 = 719.4 each at least; 100 never-visited cells add 71 940.
   // Foraging: a round trip source -> nest is at least 2 x 0.45 m at 0.12 m/s = 7.5 s, so at
   // most 16 items per robot in 120 s.
   static const std::map<std::string, Expectation> m = {
@@ -44,8 +45,8 @@ const std::map<std::string, Expectation>& expected_catalogue() {
       {"lcn", {Direction::Maximize, 0, 3.14159265358979 * 1.2 * 1.2, false}},
       {"coconut-aggregation", {Direction::Minimize, 0, 24000, true}},
       {"coconut-foraging", {Direction::Minimize, -320, 0, true}},
-      {"grid-exploration", {Direction::Minimize, 4 * 7194, 719400, false}},
-      {"grid-exploration-unbounded", {Direction::Minimize, 4 * 7194, 719400, false}},
+      {"grid-exploration", {Direction::Minimize, 4 * 719.4, 71940, false}},
+      {"grid-exploration-unbounded", {Direction::Minimize, 4 * 719.4, 71940, false}},
       // TuttiFrutti foraging: source to nest is at least 2 x 1.13 m, so 6 items per robot.
       {"tutti-aggregation", {Direction::Minimize, 0, 24000, true}},
       {"tutti-stop", {Direction::Minimize, 0, 24000, true}},
@@ -84,6 +85,14 @@ TEST(Catalogue, DurationsAreThoseOfSpecReadme) {
     EXPECT_EQ(m.duration_s, expected) << name;
     EXPECT_EQ(m.ticks, static_cast<int>(expected * 10)) << name;
   }
+}
+
+TEST(Catalogue, RabRangeIsTheScenarioFilesActuatorRange) {
+  // argos3-epuck reads the actuator's range: 0.5 in TuttiFrutti's scenario files, 0.7 in the
+  // Chocolate, Vanilla/Maple, Coconut and Arlequin ones; 0.8 only for a file that gives none.
+  for (const auto& [name, e] : expected_catalogue())
+    EXPECT_EQ(load_mission(name).robot.rab_range, name.rfind("tutti-", 0) == 0 ? 0.5 : 0.7) << name;
+  EXPECT_EQ(RobotModel{}.rab_range, 0.8);
 }
 
 TEST(Catalogue, EveryMissionEvaluatesARandomWalkWithinItsBounds) {

@@ -52,14 +52,14 @@ TEST(GridExploration, MissionGridIsTenByTenOverTheArena) {
   Rng rng(1);
   objective.post_step(s, 1, rng);
   objective.post_step(s, 2, rng);
-  EXPECT_DOUBLE_EQ(objective.value(), 99.0 / 100.0);
+  EXPECT_DOUBLE_EQ(objective.value(), 99.0 / 1000.0);  // the mission's scale 0.1
   // Tick 3: robots 1..9 in columns 1..9 of row 4, robots 10..19 in columns 0..9 of row 5
   // (cells of side 0.250001, points 0.1 m inside them), robot 0 in (5, 7): 20 distinct cells
   // at age 0. The 80 others are 2 (cell (5, 5), visited at tick 2, is visited again by robot 15).
   for (int i = 1; i < 20; ++i) s.position[static_cast<std::size_t>(i)] = {-1.1 + 0.25 * (i % 10), -0.1 + 0.25 * (i / 10)};
   s.position[0] = {0.1, 0.6};
   objective.post_step(s, 3, rng);
-  EXPECT_DOUBLE_EQ(objective.value(), (99.0 + 80 * 2.0) / 100.0);
+  EXPECT_DOUBLE_EQ(objective.value(), (99.0 + 80 * 2.0) / 1000.0);
 }
 
 }  // namespace

@@ -174,6 +174,7 @@ TEST(ArlequinModules, SixParameterlessBehavioursThatReadEveryNetworkInput) {
 TEST(ArlequinModules, ConditionsAreTheChocolateSix) {
   ReferenceModel rm;
   rm.ground = 0.0;
+  rm.ground_demiurge = 0.0;  // Arlequin's floor conditions read Demiurge's filter (demiurge_floor_conditions_test)
   rm.neighbours = 4;
   for (int d = 0; d < 6; ++d) {
     const ModuleSpec* chocolate = find_module(ModuleKind::Condition, 10 + d);

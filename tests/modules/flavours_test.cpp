@@ -155,8 +155,9 @@ TEST(Flavours, EveryFlavoursConditionsAreChocolates) {
   ReferenceModel rm;
   rm.ground = 0.0;
   rm.ground_rm3 = 0.0;  // TuttiFrutti's floor conditions read RM3.0's filter (tutti_floor_conditions_test)
+  rm.ground_demiurge = 0.0;  // Coconut's read Demiurge's RM3.0 filter (ground_filter_demiurge_test)
   rm.neighbours = 4;
-  for (const int base : {10, 20, 30, 40}) {
+  for (const int base : {10, 20, 30, 40, 50}) {
     for (int digit = 0; digit <= 5; ++digit) {
       Rng a(9), b(9);
       const ModuleInstance chocolate = module(10 + digit, {digit >= 3 && digit <= 4 ? 3.0 : 0.6, 2.0});

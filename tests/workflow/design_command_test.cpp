@@ -123,8 +123,11 @@ TEST_F(design_command, ADesignRunByASimulatorThatScoresDifferentlyIsRefused) {
   // Designs made before the version was kept count as version 1.
   db.execute("DELETE FROM meta WHERE key = 'results_version'");
   expect_error(run({"design", "--resume", folder.string()}), 1, "results version 1, this one " + current);
-  // Version 3 scored swarms of up to 362 robots as this build does: its designs go on.
-  db.execute("INSERT INTO meta (key, value) VALUES ('results_version', '3')");
+  // Version 4 heard neighbours within 0.8 m on the catalogue's missions: its designs stop too.
+  db.execute("INSERT INTO meta (key, value) VALUES ('results_version', '4')");
+  expect_error(run({"design", "--resume", folder.string()}), 1, "results version 4, this one " + current);
+  // Those of this version go on.
+  db.execute("UPDATE meta SET value = '" + current + "' WHERE key = 'results_version'");
   const std::string resumed = run_ok({"design", "--resume", folder.string(), "--json"});
   EXPECT_TRUE(nlohmann::json::parse(resumed).at("resumed").get<bool>());
 }
