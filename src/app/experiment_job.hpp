@@ -1,5 +1,5 @@
 #pragma once
-// An experiment as a job (spec §6): a protocol (experiments/protocol.hpp) becomes designs —
+// An experiment as a job: a protocol (experiments/protocol.hpp) becomes designs —
 // one per mission, condition and replicate — that run one after the other through the design
 // job (design_job.hpp) or EvoStick (evolution_job.hpp), each then assessed on fresh seeds.
 // Everything is recorded in the project's database as it becomes durable, so a killed

@@ -1,6 +1,6 @@
-// The thesis' experiments (spec §6) and their reports: `experiment` runs a protocol in the
-// active project (resuming it when it was interrupted), `report` writes its HTML report and
-// CSV files. The jobs are the application layer's (app/experiment_job, app/experiment_report);
+// The thesis' three experiments (validation, combination, architecture) and their reports:
+// `experiment` runs a protocol in the active project (resuming it when it was interrupted),
+// `report` writes its HTML report and CSV files. The jobs are the application layer's (app/experiment_job, app/experiment_report);
 // this file parses, prints and shows progress.
 #include <CLI/CLI.hpp>
 
@@ -279,7 +279,7 @@ CommandRegistrar registrar{45, [](CLI::App& app, Context&) {
   cmd->add_flag("--json", o->json, "Print JSON documents instead of text");
   add_slurm_flags(*cmd, o->job);
   cmd->footer(
-      "Experiments of spec §6, on the thesis' missions and budgets (aac 200 000, foraging 50 000,\n"
+      "The thesis' three experiments, on its missions and budgets (aac 200 000, foraging 50 000,\n"
       "tutti-aggregation 100 000, grid-exploration 100 000, aggregation-xor 200 000):\n"
       "  validation    each flavour alone on its own mission (Maple with behaviour trees)\n"
       "  combination   that, against all five flavours with both architectures\n"

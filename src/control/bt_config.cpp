@@ -1,5 +1,5 @@
-// Behaviour-tree configuration strings (modules-and-grammar.md §7.2-7.3): format B, the
-// generic one of ARGoS3-AutoMoDe's BT branch and DEMI, read and printed; format A, Maple's
+// Behaviour-tree configuration strings: format B, the generic one of ARGoS3-AutoMoDe's
+// BehaviorTree branch and of Demiurge (AmmarHsn/Demiurge), read and printed; format A, Maple's
 // original, read. Nodes are stored depth-first, so print -> parse gives the same tree.
 #include <regex>
 

@@ -1,5 +1,5 @@
 #pragma once
-// The configuration-string grammar shared with ARGoS3-AutoMoDe (modules-and-grammar.md §6):
+// The configuration-string grammar shared with ARGoS3-AutoMoDe:
 // parse `--fsm-config --nstates N --s0 B ...` into ControlSoftware and print it back.
 // Printing then parsing gives back the same control software, bit for bit.
 #include <span>

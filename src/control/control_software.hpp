@@ -30,7 +30,7 @@ struct Fsm {
   bool operator==(const Fsm&) const = default;
 };
 
-/// Behaviour-tree nodes as in ARGoS3-AutoMoDe's BT branch (modules-and-grammar.md §7).
+/// Behaviour-tree nodes as in ARGoS3-AutoMoDe's BehaviorTree branch.
 enum class BtNodeType : std::uint8_t {
   Selector = 0,
   SelectorStar = 1,   // selector with memory

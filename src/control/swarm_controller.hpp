@@ -40,13 +40,13 @@ class SwarmController {
  private:
   enum class Status : std::uint8_t { Success, Failure, Running };
 
-  /// FSM step (modules-and-grammar.md §6.2): on the step a state is entered its behaviour
-  /// is reset and no condition is checked; otherwise outgoing transitions are tried in a
-  /// random order and the first that fires is taken. The behaviour that ran this step keeps
-  /// its command either way.
+  /// FSM step (as ARGoS3-AutoMoDe's AutoMoDeFiniteStateMachine::ControlStep): on the step a
+  /// state is entered its behaviour is reset and no condition is checked; otherwise outgoing
+  /// transitions are tried in a random order and the first that fires is taken. The behaviour
+  /// that ran this step keeps its command either way.
   Actuation step_fsm(int robot, const ReferenceModel& rm, Rng& rng);
-  /// Behaviour-tree step (§7.4): tick the root once; a tree that returns success or
-  /// failure stops the robot for this step.
+  /// Behaviour-tree step (as ARGoS3-AutoMoDe's BehaviorTree branch): tick the root once; a
+  /// tree that returns success or failure stops the robot for this step.
   Actuation step_tree(int robot, const ReferenceModel& rm, Rng& rng);
   /// What every node of one robot's tree tick reads or writes.
   struct TreeTick {

@@ -1,6 +1,7 @@
 #pragma once
-// The behaviour-tree design space: Maple's topology in format B (modules-and-grammar.md
-// §8.4) — a Sequence* root over 1..4 Selectors, each a condition leaf then an action leaf.
+// The behaviour-tree design space: Maple's topology in format B (as the Demiurge grammar
+// generator's generate_grammar_bt writes it) — a Sequence* root over 1..4 Selectors, each a
+// condition leaf then an action leaf.
 #include "design/fsm_space.hpp"
 #include "design/parameter_space.hpp"
 

@@ -81,7 +81,8 @@ ParameterSpace build_design_space(const DesignSpaceChoice& choice) {
   if (fsm) options.architectures.push_back("fsm-config");
   if (bt) options.architectures.push_back("bt-config");
   ParameterSpace space(options.digits);
-  // ARCH "--" c("fsm-config", "bt-config"): the first token of every string (§8.5).
+  // ARCH "--" c("fsm-config", "bt-config"): the first token of every string, as in the
+  // unified Demiurge grammar (Demiurge_grammar.txt).
   space.add(Parameter{"ARCH", "--", ParamType::Categorical, options.architectures, {}, {}, false, {}});
   if (fsm) add_fsm_parameters(space, modules, options);
   if (bt) add_bt_parameters(space, modules, BtSpaceOptions{}, fsm);

@@ -1,7 +1,8 @@
 #pragma once
 // Which design space a user asked for: the architecture flags (--fsm, --bt) and the flavour
-// flags (--chocolate ...) of cli.md, resolved against what the module catalogue has today.
-// Flags name what may be used; none given means everything that exists.
+// flags (--chocolate ...) of the design commands (cli/design_flags.cpp), resolved against what
+// the module catalogue has today. Flags name what may be used; none given means everything
+// that exists.
 #include <string>
 #include <vector>
 

@@ -145,7 +145,8 @@ FsmModules chocolate_fsm_modules() {
 ParameterSpace build_fsm_space(const FsmModules& modules, const FsmSpaceOptions& o) {
   if (o.architectures.empty()) throw std::invalid_argument("no architecture value given");
   ParameterSpace space(o.digits);
-  // ARCH "--" c ("fsm-config", ...): first token of the string (§8.5).
+  // ARCH "--" c ("fsm-config", ...): first token of the string, as in the
+  // unified Demiurge grammar (Demiurge_grammar.txt).
   space.add(Parameter{"ARCH", "--", ParamType::Categorical, o.architectures, {}, {}, false, {}});
   add_fsm_parameters(space, modules, o);
   space.finalize();

@@ -1,6 +1,7 @@
 #pragma once
-// The probabilistic-FSM design space (modules-and-grammar.md §8.1 structure, §8.5 naming and
-// two-digit module ids, ARGoS3-AutoMoDe master tokens: ξ in --p<i>x<j>, η in --w<i>x<j>).
+// The probabilistic-FSM design space (structure of ARGoS3-AutoMoDe's irace grammar
+// new_grammar.txt, names and two-digit module ids of the unified Demiurge grammar,
+// ARGoS3-AutoMoDe master tokens: ξ in --p<i>x<j>, η in --w<i>x<j>).
 //
 // The module table is plain data so that the project's module catalogue can feed it; a module
 // parameter shared by several modules (same name) becomes one irace parameter whose condition

@@ -16,7 +16,7 @@ namespace {
 const std::vector<std::string> kAllFlavours = {"chocolate", "tuttifrutti", "coconut", "maple", "arlequin"};
 const std::vector<std::string> kArchitectures = {"fsm", "bt"};
 
-/// The thesis' missions with their budgets and the flavour that introduced each (spec §4, §6).
+/// The thesis' missions with their budgets and the flavour that introduced each.
 struct ThesisMission {
   const char* mission;
   long long budget;
@@ -124,7 +124,7 @@ Protocol builtin_protocol(std::string_view name, bool with_evostick) {
     } else if (name == "combination") {
       plan.conditions = {alone(m), combined()};
     } else if (name == "architecture") {
-      plan.budget = 200000;  // spec §6: the same budget on every mission
+      plan.budget = 200000;  // the thesis' architecture experiment: 200 000 on every mission
       plan.conditions = {{"fsm", "automode", {"fsm"}, kAllFlavours}, {"bt", "automode", {"bt"}, kAllFlavours}};
     } else {
       throw ProtocolError("unknown experiment '" + std::string(name) +

@@ -1,8 +1,8 @@
 #pragma once
 // An experiment's protocol as data: which missions, with which budget, under which conditions
 // (a design space, or the EvoStick baseline), how many independent designs per condition and
-// how many fresh seeds assess each final design. The thesis' three experiments are built in
-// (spec/README.md §6); a user writes their own as a JSON file of the same shape
+// how many fresh seeds assess each final design. The thesis' three experiments are built in;
+// a user writes their own as a JSON file of the same shape
 // (`swarmdesign experiment --file F`, format in src/experiments/README.md).
 #include <nlohmann/json.hpp>
 
@@ -44,7 +44,7 @@ struct Protocol {
   std::vector<MissionPlan> missions;
 };
 
-/// "validation", "combination", "architecture" (spec §6), optionally with EvoStick as a
+/// The thesis' "validation", "combination", "architecture", optionally with EvoStick as a
 /// further condition on every mission.
 Protocol builtin_protocol(std::string_view name, bool with_evostick = false);
 std::vector<std::string> builtin_protocol_names();

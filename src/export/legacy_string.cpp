@@ -167,7 +167,7 @@ bool maple_shape(const BehaviourTree& tree) {
   return true;
 }
 
-/// Maple's --rootnode form (modules-and-grammar.md §7.2), one-digit ids.
+/// Maple's --rootnode form, one-digit ids.
 std::string rootnode_form(const BehaviourTree& tree, int offset) {
   const BtNode& root = tree.nodes.front();
   std::string out = "--bt-config --rootnode 0 --nchildsroot ";

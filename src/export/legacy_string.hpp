@@ -10,8 +10,8 @@
 //               else the BehaviorTree branch's --nroot form; FSMs as Chocolate's.
 //   Coconut,    no one-digit code base: the only implementation, the unified Demiurge code
 //   Arlequin    base (AmmarHsn/Demiurge), reads the two-digit ids SwarmDesign prints (its
-//               commit b5bacbe read Coconut as "--flavor 2" with one-digit ids; 0179ecf, the
-//               version modules-and-grammar.md describes, reads two digits). Demiurge's Arlequin modules run its own NEAT
+//               commit b5bacbe read Coconut as "--flavor 2" with one-digit ids; its
+//               commit 0179ecf reads two digits). Demiurge's Arlequin modules run its own NEAT
 //               genomes, not SwarmDesign's networks: the string carries no weights.
 // Every code base reads the neighbour-count threshold xi from --p<i>x<j> and eta from
 // --w<i>x<j>, as SwarmDesign does, except Demiurge, which reads xi from --n<i>x<j> (the

@@ -1,9 +1,9 @@
 #pragma once
-// The arrest rule of the Coconut unbounded workspace (missions.md §3.10): after every tick,
-// before scoring, a robot whose centre is in none of the `allowed` zones is moved to a
-// uniformly random point of the jail with a uniform yaw, redrawn while it would overlap a
-// wall or another robot (up to `trials` times; if all fail it stays for this tick). Jailed
-// robots sit in an allowed zone, so they stay there.
+// The arrest rule of the Coconut unbounded workspace (AmmarHsn/loop_functions): after every
+// tick, before scoring, a robot whose centre is in none of the `allowed` zones is moved to a
+// uniformly random point of the jail with a uniform yaw, redrawn while it would overlap a wall
+// or another robot (up to `trials` times; if all fail it stays for this tick). Jailed robots
+// sit in an allowed zone, so they stay there.
 #include <vector>
 
 #include "core/rng.hpp"

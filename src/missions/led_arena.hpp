@@ -1,7 +1,8 @@
 #pragma once
-// TuttiFrutti's coloured arenas (missions.md §3.9.1): a regular polygon of `sides` walls,
-// each made of `blocks` boxes of length l (0.01 thick, 0.10 high), every block carrying
-// ceil(l / led_spacing) LEDs whose colours the mission sets and changes.
+// TuttiFrutti's coloured arenas (as its loop functions TuttiAg/St/FrLoopFunc build them): a
+// regular polygon of `sides` walls, each made of `blocks` boxes of length l (0.01 thick, 0.10
+// high), every block carrying ceil(l / led_spacing) LEDs whose colours the mission sets and
+// changes.
 // Geometry, with n sides, m blocks, side L = m l, apothem a = L / (2 tan(pi / n)):
 //   side k (1-based) is centred at a (cos t_k, sin t_k), t_k = (k - 1) 2 pi / n (side 1 at +x);
 //   block j (1-based) is centred at that point + d_j (sin t_k, -cos t_k),

@@ -1,10 +1,10 @@
 #pragma once
-// Mission events: things the arena does at a given tick, such as TuttiFrutti's LED colours
-// (missions.md §3.9): colours switched on at clock 1 (AGGREGATION, FORAGING), or one
-// random block lit at a random stop time tau ~ U{400..600} (STOP). Like the loop functions,
-// every random choice is drawn at tick 1, event after event, in file order (tick, then side,
-// then block), from the run's generator; an event then fires in the PostStep of its tick,
-// so the robots' camera sees it from the next tick on.
+// Mission events: things the arena does at a given tick, such as TuttiFrutti's LED colours (its
+// loop functions TuttiAg/St/FrLoopFunc): colours switched on at clock 1 (AGGREGATION,
+// FORAGING), or one random block lit at a random stop time tau ~ U{400..600} (STOP). Like the
+// loop functions, every random choice is drawn at tick 1, event after event, in file order
+// (tick, then side, then block), from the run's generator; an event then fires in the PostStep
+// of its tick, so the robots' camera sees it from the next tick on.
 #include <cstdint>
 #include <string>
 #include <vector>

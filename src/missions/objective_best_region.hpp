@@ -1,8 +1,9 @@
 #pragma once
-// End-time aggregation in the best of several regions (missions.md §3.1 Vanilla aggregation,
-// §3.8 aggregation-XOR): on the positions after the last tick, each robot counts for the
-// first region that contains its centre; F = (largest count) / N, with N the mission's
-// number of robots. In [0, 1].
+// End-time aggregation in the best of several regions (experiments-loop-functions'
+// AggregationTwoSpotsLoopFunc for Vanilla aggregation, AggregationTwoSpotsXOR for
+// aggregation-XOR): on the positions after the last tick, each robot counts for the first
+// region that contains its centre; F = (largest count) / N, with N the mission's number of
+// robots. In [0, 1].
 #include <vector>
 
 #include "missions/objective_base.hpp"

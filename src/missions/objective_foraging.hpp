@@ -1,9 +1,9 @@
 #pragma once
-// Foraging with a per-robot carry state (missions.md §3.2 Vanilla, §3.10 Coconut, §3.9.4
-// TuttiFrutti). Every tick, for each robot in index order (its identity, stable across
-// ticks): if its centre is in a source, it now carries that source's item (a later source
-// overwrites an earlier item); otherwise, if it is in the nest and carries an item, the
-// item is delivered: F += the source's value, and it carries nothing.
+// Foraging with a per-robot carry state (the loop functions ForagingTwoSpotsLoopFunc of Vanilla
+// and Coconut, TuttiFrLoopFunc of TuttiFrutti). Every tick, for each robot in index order (its
+// identity, stable across ticks): if its centre is in a source, it now carries that source's
+// item (a later source overwrites an earlier item); otherwise, if it is in the nest and carries
+// an item, the item is delivered: F += the source's value, and it carries nothing.
 // Vanilla: two sources of value 1 (F = deliveries); Coconut: value -1 (F = -deliveries,
 // minimised); TuttiFrutti: +1 and -1 (F = deliveries from source 1 - from source 2).
 #include <vector>

@@ -1,12 +1,13 @@
 #pragma once
-// Coconut grid exploration (missions.md §3.10): a square of `cells` x `cells` cells, each
-// with an age, initially 0. Every tick: (1) the cell of every robot gets age 0; (2) the sum
-// of all ages is added to a total; (3) every age grows by 1. F = total / number of cells,
-// i.e. the sum over ticks of the mean time since a cell was last visited, times `scale`
-// (default 1; the loop function's current version divides by 10 more: scale 0.1). Minimise.
-// A robot's cell is trunc(cells * (x / side + 1/2)) per axis, as the original, so a robot
-// just below the square's lower edge still falls in cell 0; outside 0..cells-1 it is ignored.
-// Cells the robots cannot reach (the square's corners outside the dodecagon) just age.
+// Coconut grid exploration (AmmarHsn/loop_functions' GridExplorationLoopFunc): a square of
+// `cells` x `cells` cells, each with an age, initially 0. Every tick: (1) the cell of every
+// robot gets age 0; (2) the sum of all ages is added to a total; (3) every age grows by 1. F =
+// total / number of cells, i.e. the sum over ticks of the mean time since a cell was last
+// visited, times `scale` (default 1; the loop function's current version divides by 10 more:
+// scale 0.1). Minimise. A robot's cell is trunc(cells * (x / side + 1/2)) per axis, as the
+// original, so a robot just below the square's lower edge still falls in cell 0; outside
+// 0..cells-1 it is ignored. Cells the robots cannot reach (the square's corners outside the
+// dodecagon) just age.
 #include <vector>
 
 #include "missions/objective_base.hpp"

@@ -1,13 +1,13 @@
 #pragma once
 // Coverage measured by Monte-Carlo sample points, computed once on the final positions
-// (missions.md §3.5 CFA, §3.6 SPC). Each term draws `count` points from the run's
-// generator; for each point, d = distance to the closest robot the term's filter accepts
-// (or `missing_distance` if it accepts none); the term is weight * mean(d) / normalizer.
-// F = max(at_least, offset + sum of the terms).
+// (experiments-loop-functions' ChocolateCFALoopFunc and ChocolateSPCLoopFunc). Each term draws
+// `count` points from the run's generator; for each point, d = distance to the closest robot
+// the term's filter accepts (or `missing_distance` if it accepts none); the term is weight *
+// mean(d) / normalizer. F = max(at_least, offset + sum of the terms).
 //   CFA: one term, points polar-uniform in the disc of 1.2 m (rho ~ U(0, R), theta ~ U(0,
 //        2 pi): denser near the centre), robots not on a forbidden disc, missing 2.5,
 //        weight -100, offset 250, at least 0: F = max(0, (2.5 - E[d]) * 100). The mean is
-//        the corrected one (spec README §3: the accumulation bug is not reproduced).
+//        the corrected one: ChocolateCFALoopFunc's accumulation bug is not reproduced.
 //   SPC: area term (uniform in the white square, robots on it, missing 0.85, / 0.08) plus
 //        perimeter term (uniform angle on the circle, robots within 0.04 of it, missing
 //        0.6, / 0.06). Minimise.

@@ -1,5 +1,6 @@
 #pragma once
-// LCN, the largest covering network (missions.md §3.7), on the final positions:
+// LCN, the largest covering network (experiments-loop-functions' ChocolateLCNLoopFunc), on the
+// final positions:
 //  1. robots i, j are linked iff |p_i - p_j| < link_range (strict); connected components
 //     are labelled in robot-index order;
 //  2. G = the largest component (ties: the first labelled);

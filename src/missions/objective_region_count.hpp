@@ -1,7 +1,7 @@
 #pragma once
 // F = sum over ticks t = 1..T of the number of robots whose centre is in a zone, or with
-// `outside` of those that are not: AAC (missions.md §3.3), SCA (§3.4), Coconut aggregation
-// (§3.10), TuttiFrutti aggregation (§3.9.2, robots with y < 0.465).
+// `outside` of those that are not: AAC, SCA (Chocolate), Coconut aggregation, TuttiFrutti
+// aggregation (robots with y < 0.465).
 #include "missions/objective_base.hpp"
 #include "missions/zone.hpp"
 

@@ -1,11 +1,13 @@
 #pragma once
-// TuttiFrutti STOP (missions.md §3.9.3): the swarm should move until a signal, then stop.
+// TuttiFrutti STOP (its loop function TuttiStLoopFunc): the swarm should move until a signal,
+// then stop.
 // With tau the tick a mission event fires (a random block lights up) and
 // D_i(t) = |p_i(t) - p_i(t-1)| the distance robot i moved during tick t:
 //   for t <= tau: F += #{i : D_i(t) <= threshold}   (robots not moving yet)
 //   for t >  tau: F += #{i : D_i(t) >  threshold}   (robots still moving)
-// Minimise; in [0, N T]. At t = 1 the previous position is the initial one; the robots
-// cannot move during tick 1 (no command has been issued yet, §1.4), so D_i(1) = 0.
+// Minimise; in [0, N T]. At t = 1 the previous position is the initial one; the robots cannot
+// move during tick 1 (ARGoS3 applies a command in the tick after the control step that issued
+// it, and none has run yet), so D_i(1) = 0.
 #include <string>
 #include <vector>
 

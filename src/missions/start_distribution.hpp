@@ -1,6 +1,7 @@
 #pragma once
-// Where robots start. Most missions draw uniformly in a region (the ELF disc formula for
-// discs, §1.3). TuttiFrutti's loop functions use their own draw (missions.md §3.9.2-3.9.4):
+// Where robots start. Most missions draw uniformly in a region (for discs, the formula of
+// experiments-loop-functions' CoreLoopFunctions). TuttiFrutti's loop functions use their own
+// draw:
 //   a, b ~ U(0, 1), swapped so that a <= b; c, d ~ U(-1, 1);
 //   p = center + jitter (c, d) + radius (cos phi, sin phi), phi = from + span a / b,
 // i.e. a point on an arc, jittered in a square:

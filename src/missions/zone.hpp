@@ -2,7 +2,7 @@
 // Where a robot's centre is, as objectives and mission rules ask it: a floor Region (disc,
 // rectangle, polygon), a ring around a circle (SPC's "on the perimeter"), or axis-aligned
 // limits (half-planes and their intersections: the foraging nest y <= -0.6, the SCA shelter
-// with strict bounds). Robot centres are tested, never bodies (missions.md §6.2).
+// with strict bounds). Robot centres are tested, never bodies, as the loop functions do.
 #include <limits>
 #include <variant>
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// Arlequin's neural-network behaviours (modules-and-grammar.md §4.4), also the whole control
+// Arlequin's neural-network behaviours (Demiurge's Harlequin modules), also the whole control
 // software of EvoStick: a single-layer perceptron from 25 inputs (the last one a bias of 1)
 // to 2 sigmoid outputs that drive the wheels.
 //
@@ -23,7 +23,7 @@ inline constexpr double kWeightBound = 5.0;        // EvoStick keeps weights in 
 using Inputs = std::array<double, kInputs>;
 using Weights = std::array<double, kWeights>;
 
-/// The 25 inputs of §4.4 (RM1.1 encoding of NEAT/EvoStick):
+/// The 25 inputs (RM1.1 encoding of ARGoS3-NEAT's NeuralNetworkRM1Dot1, used by EvoStick):
 ///   0-7 raw proximity, 8-15 raw light,
 ///   16-18 ground left, centre, right: 0 on a black floor and 1 on a white one (5-step
 ///         majority); on grey, the sensor's own simulated raw reading. DEMI draws grey values

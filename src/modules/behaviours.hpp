@@ -1,6 +1,6 @@
 #pragma once
-// Control laws of the behaviour modules (modules-and-grammar.md §3-4). A behaviour reads the
-// reference model, may keep a little memory between steps, and sets the wheels (cm/s) and
+// Control laws of the behaviour modules (ARGoS3-AutoMoDe's and Demiurge's). A behaviour reads
+// the reference model, may keep a little memory between steps, and sets the wheels (cm/s) and
 // the RGB LEDs.
 #include <cmath>
 #include <cstdint>

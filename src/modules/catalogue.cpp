@@ -70,7 +70,8 @@ std::vector<ModuleSpec> build_behaviours() {
   b.push_back({33, ModuleKind::Behaviour, "Anti-phototaxis", exploration_scheme(), kLight | kProx});
   b.push_back({34, ModuleKind::Behaviour, "Attraction", plus({att()}, exploration_scheme()), kRab | kProx});
   b.push_back({35, ModuleKind::Behaviour, "Repulsion", plus({rep()}, exploration_scheme()), kRab | kProx});
-  // Arlequin: neural networks without parameters; every one reads the 25 inputs of §4.4.
+  // Arlequin: neural networks without parameters; every one reads the 25 inputs of
+  // modules/arlequin.hpp.
   constexpr std::uint8_t kNetwork = kProx | kLight | kGroundInput | kRab;
   const char* arlequin[] = {"Exploration", "Stop", "Phototaxis", "Anti-phototaxis", "Attraction", "Repulsion"};
   for (int d = 0; d < 6; ++d) b.push_back({50 + d, ModuleKind::Behaviour, arlequin[d], {}, kNetwork});

@@ -1,6 +1,6 @@
 #pragma once
-// Condition modules (modules-and-grammar.md §5). A condition is stateless: it looks at the
-// reference model and fires with a probability; the Bernoulli draw happens only when its
+// Condition modules (ARGoS3-AutoMoDe's AutoMoDeCondition*). A condition is stateless: it looks
+// at the reference model and fires with a probability; the Bernoulli draw happens only when its
 // precondition holds, as in AutoMoDe.
 #include <span>
 #include <vector>

@@ -1,7 +1,7 @@
 #pragma once
 // Maple's actions (ids 40-45): the six Chocolate behaviours as the behaviour-tree code base
-// defines them (ARGoS3-AutoMoDe branch BehaviorTree, dd7167c, modules-and-grammar.md §3.1-3.2,
-// §4.5), not master's. Three laws differ from Chocolate:
+// defines them (ARGoS3-AutoMoDe branch BehaviorTree, dd7167c), not master's. Three laws differ
+// from Chocolate:
 // - W(v) keeps the inner wheel at or above -0.5 x the maximum speed (max(-0.5, cos theta));
 // - Exploration turns only when the proximity reading in front is >= 0.5 (master: >= 0.1);
 // - Repulsion applies rep once (-A(rep) - 5 P), where master's grows with rep^2.

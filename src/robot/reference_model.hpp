@@ -1,5 +1,5 @@
 #pragma once
-// Reference model RM1.2 (modules-and-grammar.md §2.2-2.3): how an AutoMoDe controller sees
+// Reference model RM1.2 (demiurge-epuck-dao's ReferenceModel1Dot2): how an AutoMoDe controller sees
 // its raw sensors. Per robot it keeps the 5- and 10-step ground histories and the 11-step
 // range-and-bearing message buffer, and it exposes the processed quantities the modules use.
 // Vectors are kept as vectors (never as angle + length) so the control step needs no trig.

@@ -1,5 +1,5 @@
 #pragma once
-// The e-puck as simulated by ARGoS3 + argos3-epuck (robot-and-simulator.md §2-3): fixed
+// The e-puck as simulated by ARGoS3 (dynamics2d) + argos3-epuck: fixed
 // geometry and constants. What a mission may change lives in RobotModel (robot_model.hpp).
 #include <array>
 

@@ -1,6 +1,6 @@
 #pragma once
-// One tick of rigid-body motion (robot-and-simulator.md §2), written for a swarm of
-// identical discs among static box walls.
+// One tick of rigid-body motion (as ARGoS3's dynamics2d engine moves e-pucks), written for a
+// swarm of identical discs among static box walls.
 //
 // What we keep from ARGoS/dynamics2d: the drive sets, once per tick, a target velocity along
 // the heading at the START of the tick (so motion within a tick is a chord, not an arc) and

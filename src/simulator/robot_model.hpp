@@ -1,6 +1,6 @@
 #pragma once
-// The parts of the robot model a mission may override (spec README §3: ARGoS3 as actually
-// run by AutoMoDe). Defaults are the AutoMoDe experiment files' values.
+// The parts of the robot model a mission may override (ARGoS3 as actually run by AutoMoDe).
+// Defaults are the AutoMoDe experiment files' values.
 namespace sd {
 
 struct RobotModel {

@@ -1,5 +1,5 @@
 #pragma once
-// Raw sensing of one tick (robot-and-simulator.md §3): proximity rays, light, ground,
+// Raw sensing of one tick (argos3-epuck's simulated sensors): proximity rays, light, ground,
 // range-and-bearing with line of sight and packet loss, and (when asked) the camera.
 // Reads poses, writes the sensor arrays of SwarmState; draws noise from the run's Rng.
 #include "core/rng.hpp"

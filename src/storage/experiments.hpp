@@ -1,5 +1,5 @@
 #pragma once
-// The experiments of one project (spec §6): the protocol as run, its designs (one per mission,
+// The experiments of one project: the protocol as run, its designs (one per mission,
 // condition and replicate) with their stage, final control software, convergence and the
 // scores of their assessment on fresh seeds. A running experiment is leased by the job that
 // runs it (storage/lease.hpp), like a design, so a killed one is found interrupted and resumed.

@@ -102,7 +102,7 @@ ALTER TABLE designs ADD COLUMN heartbeat_at INTEGER;  -- Unix seconds of the own
 UPDATE designs SET owner = process || '/' || coalesce(pid, 0) || '/cli', heartbeat_at = updated_at
   WHERE process IS NOT NULL;
 )sql",
-    // 4: experiments (spec §6): a protocol run as many designs, each assessed on fresh seeds.
+    // 4: experiments: a protocol run as many designs, each assessed on fresh seeds.
     // A design's race lives in its folder, as for `designs`; what the report needs is here.
     R"sql(
 CREATE TABLE experiments (

@@ -1,5 +1,6 @@
-// Behaviour trees: both grammars of modules-and-grammar.md §7.2-7.3 and the tick semantics
-// of §7.4, on a scripted reference model.
+// Behaviour trees: both grammars (Maple's --rootnode format and the BehaviorTree branch's
+// --nroot format) and the tick semantics of ARGoS3-AutoMoDe's BehaviorTree branch, on a
+// scripted reference model.
 #include <gtest/gtest.h>
 
 #include "control/config_string.hpp"

@@ -1,6 +1,6 @@
-// FSM execution semantics (modules-and-grammar.md §6.2, README §3): no condition on the
-// entry step, the old state's command on the firing step, behaviour reset on entry, random
-// order of outgoing transitions with the first that fires winning.
+// FSM execution semantics (ARGoS3-AutoMoDe's AutoMoDeFiniteStateMachine::ControlStep): no
+// condition on the entry step, the old state's command on the firing step, behaviour reset on
+// entry, random order of outgoing transitions with the first that fires winning.
 #include <gtest/gtest.h>
 
 #include <cmath>

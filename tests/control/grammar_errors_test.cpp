@@ -1,5 +1,5 @@
 // Malformed configuration strings are rejected with a ConfigError whose message names the
-// offending token (README §2).
+// offending token.
 #include <gtest/gtest.h>
 
 #include <string>

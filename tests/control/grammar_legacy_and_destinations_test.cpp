@@ -1,5 +1,5 @@
-// Legacy one-digit Chocolate strings (README §2) and the "index among the other states"
-// destination encoding of --n<i>x<j> (modules-and-grammar.md §6.1).
+// Legacy one-digit Chocolate strings and the "index among the other states" destination
+// encoding of --n<i>x<j> (as ARGoS3-AutoMoDe's FSM builder reads it).
 #include <gtest/gtest.h>
 
 #include <string>

@@ -1,5 +1,5 @@
 // Printing then parsing any valid control software gives it back bit for bit, and parsing
-// then printing then parsing is stable (README §2, modules-and-grammar.md §6.1).
+// then printing then parsing is stable.
 #include <gtest/gtest.h>
 
 #include <bit>

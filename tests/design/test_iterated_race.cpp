@@ -59,16 +59,17 @@ TEST(design_IteratedRace, BudgetFormulasMatchIrace) {
   EXPECT_EQ(default_nb_iterations(11), 5);
   EXPECT_EQ(default_nb_iterations(101), 8);
   EXPECT_EQ(default_nb_iterations(133), 9);
-  // iterated-racing.md §2.6 (ACOTSP, budget 1000): N_1 = floor(200 / 6) = 33;
+  // irace 3.5's ACOTSP example output (vignettes/irace-acotsp-stdout.txt, budget 1000):
+  // N_1 = floor(200 / 6) = 33;
   // N_2 = floor((208 + 4 elites x 5 old instances) / max(5 + 2, 5 + 1)) = 32.
   EXPECT_EQ(nb_configurations_for(200, 1, 5, 1, 0, 0, 0), 33);
   EXPECT_EQ(nb_configurations_for(208, 2, 5, 1, 4, 5, 1), 32);
-  // The 1024 cap (§2.5: B_1 = 22222 for an AutoMoDe-sized space).
+  // The 1024 cap (B_1 = 22222 for an AutoMoDe-sized space: budget 200 000, 9 iterations).
   EXPECT_EQ(nb_configurations_for(22222, 1, 5, 1, 0, 0, 0), 1024);
   // Elitist saving when old instances dominate: n_j = round_to_multiple(n_old + T_new).
   EXPECT_EQ(nb_configurations_for(100, 2, 5, 1, 3, 20, 1), (100 + 60) / 21);
   IraceOptions o;
-  EXPECT_EQ(minimum_budget(o, 9, 9), 1350);  // §2.5
+  EXPECT_EQ(minimum_budget(o, 9, 9), 1350);  // irace's computeMinimumBudget: (9 + 1) x 9 x 15
   o.elitist = false;
   EXPECT_EQ(minimum_budget(o, 5, 5), 6 * 5 * 10);
 }

@@ -14,7 +14,7 @@ const ParameterSpace& chocolate() {
   return space;
 }
 
-// modules-and-grammar.md §6.1 example, with two-digit ids.
+// Two states: Attraction, left on NeighborsCount; Exploration, left with probability 0.5.
 const char* kExample =
     "--fsm-config --nstates 2 --s0 14 --att0 3.25 --n0 1 --n0x0 0 --c0x0 13 --p0x0 5 --w0x0 10.2 "
     "--s1 10 --rwm1 50 --n1 1 --n1x0 0 --c1x0 15 --p1x0 0.5";

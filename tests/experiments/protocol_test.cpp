@@ -1,4 +1,4 @@
-// Protocols as data: the thesis' three experiments as spec §6 states them, a protocol file read
+// Protocols as data: the thesis' three experiments, a protocol file read
 // back exactly, and every malformed field refused with its path.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The Coconut arrest rule (missions.md §3.10) in the unbounded grid-exploration mission.
+// The Coconut arrest rule (AmmarHsn/loop_functions) in the unbounded grid-exploration mission.
 #include <gtest/gtest.h>
 
 #include <cmath>

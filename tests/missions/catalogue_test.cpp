@@ -22,8 +22,8 @@
 namespace sd {
 namespace {
 
-/// Each mission's direction and the range its natural value must stay in (missions.md §5,
-/// or by hand where it gives none).
+/// Each mission's direction and the range its natural value must stay in (worked
+/// out by hand from each objective function).
 struct Expectation {
   Direction direction;
   double lo, hi;

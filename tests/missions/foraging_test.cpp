@@ -73,7 +73,7 @@ TEST(Foraging, EveryRobotCarriesItsOwnItem) {
 }
 
 TEST(Foraging, ALaterSourceOverwritesTheItemAndTheFirstMatchingSourceWins) {
-  // TuttiFrutti foraging (missions.md §3.9.4): source 1 (bottom) +1, source 2 (top) -1.
+  // TuttiFrutti foraging (TuttiFrLoopFunc): source 1 (bottom) +1, source 2 (top) -1.
   ForagingObjective params;
   params.sources = {{Limits{.x_min = 0.565, .y_max = -0.006}, 1.0}, {Limits{.x_min = 0.565, .y_min = 0.006}, -1.0}};
   params.nest = Limits{.x_max = -0.565};

@@ -1,5 +1,5 @@
-// Grid exploration (missions.md §3.10): cell ages counted by hand on a 2 x 2 grid, and the
-// mission's 10 x 10 grid.
+// Grid exploration (Coconut's GridExplorationLoopFunc): cell ages counted by hand on a 2 x 2
+// grid, and the mission's 10 x 10 grid.
 #include <gtest/gtest.h>
 
 #include "missions/catalogue.hpp"

@@ -1,6 +1,6 @@
 // Arena geometry the mission files promise, seen through the simulator: the SCA shelter's
 // walls block robots and shade the light, the Coconut unbounded arena is open at the top,
-// floors read as missions.md gives them.
+// floors read as the loop functions colour them.
 #include <gtest/gtest.h>
 
 #include <cmath>

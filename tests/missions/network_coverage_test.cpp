@@ -1,4 +1,4 @@
-// LCN (missions.md §3.7): components by hand, covered areas from circle geometry, and the
+// LCN (ChocolateLCNLoopFunc): components by hand, covered areas from circle geometry, and the
 // bounding-box quirk seen through the number of random draws it consumes.
 #include <gtest/gtest.h>
 

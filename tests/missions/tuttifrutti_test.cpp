@@ -1,6 +1,6 @@
-// TuttiFrutti missions (missions.md §3.9): LED-block geometry, colour events, the random
-// stop signal, the stop-then-move objective by hand, the start draw, and the camera seeing
-// the colours end to end.
+// TuttiFrutti missions (loop functions TuttiAg/St/FrLoopFunc): LED-block geometry, colour
+// events, the random stop signal, the stop-then-move objective by hand, the start draw, and the
+// camera seeing the colours end to end.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Arlequin modules 50-55 (modules-and-grammar.md §4.4): the perceptron's forward pass
+// Arlequin modules 50-55 (Demiurge's Harlequin modules): the perceptron's forward pass
 // against values computed by hand (Python, outside this code base), the 25-input encoding
 // from a scripted reference model, and the catalogue and dispatch of the six modules.
 #include <gtest/gtest.h>

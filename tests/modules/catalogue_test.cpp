@@ -1,5 +1,5 @@
 // The module table: Chocolate ids 10-15 with the parameter domains of the irace grammar
-// (modules-and-grammar.md §4.1, §5, §8.1).
+// (ARGoS3-AutoMoDe's optimization/example/new_grammar.txt).
 #include <gtest/gtest.h>
 
 #include <cmath>

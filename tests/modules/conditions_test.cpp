@@ -1,4 +1,4 @@
-// Condition modules (modules-and-grammar.md §5): floor conditions on the filtered ground
+// Condition modules (ARGoS3-AutoMoDe's AutoMoDeCondition*): floor conditions on the filtered ground
 // value, the logistic neighbour conditions, FixedProbability; the Bernoulli draw happens only
 // when the precondition holds.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Exploration (modules-and-grammar.md §4.1): straight on; an obstacle in front (|P| >= 0.1,
+// Exploration (ARGoS3-AutoMoDe master): straight on; an obstacle in front (|P| >= 0.1,
 // angle in [-pi/2, pi/2]) starts an in-place turn away from it on the next step, lasting
 // max(U{0..rwm-1}, 1) steps.
 #include <gtest/gtest.h>

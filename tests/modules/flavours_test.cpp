@@ -1,4 +1,5 @@
-// TuttiFrutti, Coconut and Maple control laws (modules-and-grammar.md §4.2, §4.3, §4.5, §5).
+// TuttiFrutti, Coconut and Maple control laws (ARGoS3-AutoMoDe's tuttifrutti and
+// BehaviorTree branches, Demiurge).
 #include <gtest/gtest.h>
 
 #include <array>

@@ -1,5 +1,5 @@
 // Maple's actions (ids 40-45) follow the behaviour-tree code base (ARGoS3-AutoMoDe branch
-// BehaviorTree, dd7167c; modules-and-grammar.md §3.1-3.2, §4.5), not master: W(v) keeps the
+// BehaviorTree, dd7167c), not master: W(v) keeps the
 // inner wheel at or above -0.5 x 12 cm/s, Exploration turns only at a reading >= 0.5 in front,
 // and Repulsion applies rep once.
 #include <gtest/gtest.h>

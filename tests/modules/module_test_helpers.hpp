@@ -1,6 +1,6 @@
 #pragma once
-// Shared by the module tests: W(v) restated from modules-and-grammar.md §3.1 (so the tests do
-// not reuse the code under test), binomial bands, and generator-state comparison.
+// Shared by the module tests: W(v) restated from ARGoS3-AutoMoDe's AutoMoDeBehaviour (so the
+// tests do not reuse the code under test), binomial bands, and generator-state comparison.
 #include <gtest/gtest.h>
 
 #include <cmath>

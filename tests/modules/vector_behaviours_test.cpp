@@ -1,4 +1,4 @@
-// Stop, Phototaxis, Anti-phototaxis, Attraction, Repulsion (modules-and-grammar.md §4.1):
+// Stop, Phototaxis, Anti-phototaxis, Attraction, Repulsion (ARGoS3-AutoMoDe master):
 // each computes a vector from the reference model, replaces vectors shorter than 0.1 by
 // "straight ahead" and drives with W(v). Expected vectors are computed here by hand.
 #include <gtest/gtest.h>

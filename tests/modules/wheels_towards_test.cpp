@@ -1,5 +1,6 @@
-// W(v) of RM1.2 (modules-and-grammar.md §3.1): outer wheel 12 cm/s, inner 12 cos(theta),
-// theta exactly 0 or pi turns right (left wheel 12), the zero vector stops (README §3).
+// W(v) of RM1.2 (ARGoS3-AutoMoDe's AutoMoDeBehaviour): outer wheel 12 cm/s,
+// inner 12 cos(theta), theta exactly 0 or pi turns right (left wheel 12), the zero vector
+// stops (where AutoMoDe's W(v) gives NaN wheel speeds).
 #include <gtest/gtest.h>
 
 #include <cmath>

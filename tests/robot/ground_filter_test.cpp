@@ -1,6 +1,6 @@
-// RM1.2 ground reading (modules-and-grammar.md §2.2): over the last 5 steps x 3 sensors,
-// more than 10 samples < 0.03 -> black (0); else more than 10 samples > 0.85 -> white (1);
-// else gray (0.5).
+// RM1.2 ground reading (demiurge-epuck-dao's ReferenceModel1Dot2): over the last 5 steps x 3
+// sensors, more than 10 samples < 0.03 -> black (0); else more than 10 samples > 0.85 -> white
+// (1); else gray (0.5).
 #include <gtest/gtest.h>
 
 #include <algorithm>

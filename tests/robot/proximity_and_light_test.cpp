@@ -1,6 +1,6 @@
-// RM1.2 proximity and light vectors (modules-and-grammar.md §2.1-2.2): P = sum of p_i at the
-// reported sensor angles, length clipped to 1; light = unit vector towards sum of l_i at the
-// same angles if any l_i > 0.2, else zero.
+// RM1.2 proximity and light vectors (demiurge-epuck-dao's ReferenceModel1Dot2): P = sum of p_i
+// at the reported sensor angles, length clipped to 1; light = unit vector towards sum of l_i at
+// the same angles if any l_i > 0.2, else zero.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,6 +1,6 @@
-// RM1.2 range and bearing (modules-and-grammar.md §2.2-2.3): the neighbour count is this
-// step's senders; the attraction vector sums 1 / (1 + range_cm) at the bearing over every
-// message of the current and the previous 10 steps.
+// RM1.2 range and bearing (demiurge-epuck-dao's ReferenceModel1Dot2, RabMessageBuffer): the
+// neighbour count is this step's senders; the attraction vector sums 1 / (1 + range_cm) at the
+// bearing over every message of the current and the previous 10 steps.
 #include <gtest/gtest.h>
 
 #include <cmath>

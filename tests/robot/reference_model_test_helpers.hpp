@@ -9,7 +9,8 @@
 
 namespace sd::test {
 
-/// The reported sensor angles of modules-and-grammar.md §2.1, in radians.
+/// The sensor angles argos3-epuck's control interface reports (17, 50, 90, 150, 210, 270, 310
+/// and 343 degrees), in radians.
 inline constexpr std::array<double, 8> kReportedAngles = {0.2967, 0.8727, 1.5708, 2.6180,
                                                           3.6654, 4.7122, 5.4109, 5.9874};
 inline constexpr double kAngleTolerance = 2e-4;

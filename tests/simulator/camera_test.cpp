@@ -1,4 +1,4 @@
-// The omnidirectional camera and LEDs (robot-and-simulator.md §3.5-3.6).
+// The omnidirectional camera and LEDs (as argos3-epuck simulates them).
 #include <gtest/gtest.h>
 
 #include <cmath>

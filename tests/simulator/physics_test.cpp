@@ -1,4 +1,4 @@
-// Kinematics and contacts of the e-puck model (robot-and-simulator.md §2).
+// Kinematics and contacts of the e-puck model (as ARGoS3's dynamics2d engine moves it).
 #include <gtest/gtest.h>
 
 #include <cmath>

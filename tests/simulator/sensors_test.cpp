@@ -1,4 +1,4 @@
-// Every sensor against geometry computed by hand (robot-and-simulator.md §3).
+// Every sensor against geometry computed by hand.
 #include <gtest/gtest.h>
 
 #include <algorithm>
