@@ -10,17 +10,7 @@
 namespace sd {
 namespace {
 
-using Floor = std::array<double, 3>;
-
-class DemiurgeGroundFilter : public testing::Test {
- protected:
-  void step(const Floor& floor) {
-    swarm.ground[0] = floor;
-    rm.update(swarm, 0);
-  }
-  SwarmState swarm = test::silent_swarm();
-  ReferenceModel rm;
-};
+using DemiurgeGroundFilter = test::GroundFilterTest;
 
 TEST_F(DemiurgeGroundFilter, NineSamplesBelowPointZeroTwoAreBlack) {
   step({0.01, 0.01, 0.01});

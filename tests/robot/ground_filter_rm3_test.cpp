@@ -10,17 +10,7 @@
 namespace sd {
 namespace {
 
-using Floor = std::array<double, 3>;
-
-class Rm3GroundFilter : public testing::Test {
- protected:
-  void step(const Floor& floor) {
-    swarm.ground[0] = floor;
-    rm.update(swarm, 0);
-  }
-  SwarmState swarm = test::silent_swarm();
-  ReferenceModel rm;
-};
+using Rm3GroundFilter = test::GroundFilterTest;
 
 TEST_F(Rm3GroundFilter, NoisyBlackIsBlackForRm3Only) {
   // A black floor with the sensor noise reads up to 0.05: RM1.x calls 0.04 gray, RM3.0 black.

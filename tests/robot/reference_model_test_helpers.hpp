@@ -1,5 +1,7 @@
 #pragma once
 // Hand-built SwarmStates for reference-model tests.
+#include <gtest/gtest.h>
+
 #include <array>
 #include <cmath>
 #include <vector>
@@ -37,5 +39,17 @@ inline void set_packets(SwarmState& s, int robot, const std::vector<Packet>& pac
     s.rab[base + k] = RabPacket{packets[k].range_cm, unit_at(packets[k].bearing), packets[k].sender};
   s.rab_count[static_cast<std::size_t>(robot)] = static_cast<std::uint16_t>(packets.size());
 }
+
+/// One robot's ground sensors fed tick by tick into a reference model, for the floor filters.
+class GroundFilterTest : public testing::Test {
+ protected:
+  using Floor = std::array<double, 3>;
+  void step(const Floor& floor) {
+    swarm.ground[0] = floor;
+    rm.update(swarm, 0);
+  }
+  SwarmState swarm = silent_swarm();
+  ReferenceModel rm;
+};
 
 }  // namespace sd::test
