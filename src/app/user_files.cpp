@@ -55,6 +55,18 @@ std::string FileScope::read(const std::string& path, const std::string& what) co
 }
 
 std::filesystem::path FileScope::writable_folder(const std::filesystem::path& path, const std::string& what) const {
+  // Checked before anything is made: where the folder would be (its existing part's links
+  // resolved), and no dangling link on the way, which create_directories would follow to make
+  // a folder elsewhere.
+  if (root_) {
+    if (!is_within(std::filesystem::weakly_canonical(path), *root_)) refuse(path.string(), what);
+    std::filesystem::path prefix;
+    for (const auto& part : path) {
+      prefix /= part;
+      std::error_code ec;
+      if (std::filesystem::is_symlink(prefix, ec) && !std::filesystem::exists(prefix, ec)) refuse(path.string(), what);
+    }
+  }
   std::filesystem::create_directories(path);
   if (!allows(path)) refuse(path.string(), what);
   return std::filesystem::canonical(path);

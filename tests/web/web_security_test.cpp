@@ -194,6 +194,11 @@ TEST_F(WebSecurity, ALinkPlantedInOnesOwnProjectDoesNotLeadOut) {
   }
   EXPECT_EQ(alice_->post("/api/projects/other/software", {{"name", "w"}, {"text", kFsm}}).status, 404);
   EXPECT_TRUE(std::filesystem::is_empty(root_ / "elsewhere"));
+  // Nor does a link to a folder that does not exist yet get that folder made.
+  std::filesystem::remove(projects_of("alice") / "other" / "software");
+  std::filesystem::create_symlink(root_ / "not-yet", projects_of("alice") / "other" / "software");
+  EXPECT_EQ(alice_->post("/api/projects/other/software", {{"name", "w"}, {"text", kFsm}}).status, 404);
+  EXPECT_FALSE(std::filesystem::exists(root_ / "not-yet"));
 }
 
 TEST_F(WebSecurity, DevicesFifosAndHugeFilesAreRefusedAtOnceWithMemoryFlat) {
@@ -337,7 +342,8 @@ TEST_F(WebSecurity, OneUsersRunsDoNotTakeEveryoneElsesExec) {
   std::ifstream in(std::filesystem::path(SWARMDESIGN_SOURCE_DIR) / "missions" / "aggregation.json");
   std::string text((std::istreambuf_iterator<char>(in)), {});
   text = std::regex_replace(text, std::regex("\"robots\": 20"), "\"robots\": 1000");
-  text = std::regex_replace(text, std::regex("\"duration\": 250"), "\"duration\": 100");
+  // 1000 robots for 999 ticks and the placement: exactly the 1,000,000 robot-frames Exec keeps.
+  text = std::regex_replace(text, std::regex("\"duration\": 250"), "\"duration\": 99.9");
   text = std::regex_replace(text, std::regex("\"apothem\": 1.231, \"length\": 0.66"), "\"apothem\": 6, \"length\": 3.22");
   text = std::regex_replace(text, std::regex("\"radius\": 1.2\\}\\}"), "\"radius\": 5.5}}");
   std::ofstream(folder / "crowd.json") << text;
@@ -352,7 +358,7 @@ TEST_F(WebSecurity, OneUsersRunsDoNotTakeEveryoneElsesExec) {
   const Answer bobs = bob_->post("/api/runs", {{"text", kFsm}, {"mission", "aac"}, {"seed", 1}});
   EXPECT_EQ(bobs.status, 200) << "Bob's Exec must not wait for Alice's runs: " << bobs.text;
   // A run longer than Exec records is the CLI's.
-  std::ofstream(folder / "endless.json") << std::regex_replace(text, std::regex("\"duration\": 100"), "\"duration\": 1000");
+  std::ofstream(folder / "endless.json") << std::regex_replace(text, std::regex("\"duration\": 99.9"), "\"duration\": 1000");
   const Answer too_long =
       alice_->post("/api/runs", {{"text", kFsm}, {"mission", (folder / "endless.json").string()}, {"seed", 1}});
   EXPECT_EQ(too_long.status, 400) << too_long.text;
