@@ -21,7 +21,8 @@ int http_status(app::ErrorKind kind) {
 
 nlohmann::json read_json_body(const httplib::Request& request) {
   nlohmann::json body;
-  const std::string& text = request.body.empty() ? std::string("{}") : request.body;
+  static const std::string kEmptyObject = "{}";
+  const std::string& text = request.body.empty() ? kEmptyObject : request.body;
   try {
     body = nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {

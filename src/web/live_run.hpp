@@ -26,8 +26,11 @@ class LiveRun {
   LiveRun& operator=(const LiveRun&) = delete;
 
   std::int64_t owner() const { return owner_; }
-  /// Robots times ticks: what its timeline holds, in robot-frames.
-  long long robot_ticks() const { return static_cast<long long>(mission_.robots) * (mission_.ticks + 1); }
+  /// What a run of `mission` records: robots times frames (the placement and every tick).
+  static long long robot_ticks(const Mission& mission) {
+    return static_cast<long long>(mission.robots) * (mission.ticks + 1);
+  }
+  long long robot_ticks() const { return robot_ticks(mission_); }
   bool finished() const;
 
   /// Waits up to `timeout_ms` for events after the first `from`; appends them to `out` and

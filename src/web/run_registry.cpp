@@ -18,16 +18,13 @@ std::int64_t RunRegistry::start(std::int64_t owner, Mission mission, ControlSoft
                         " runs: try again when one has finished");
   if (running >= kMaxRunning)
     throw app::Conflict("the server is already simulating " + std::to_string(running) + " runs: try again in a moment");
-  const auto kept_robot_ticks = [this] {
-    long long sum = 0;
-    for (const auto& [id, run] : runs_) sum += run->robot_ticks();
-    return sum;
-  };
-  const long long adding = static_cast<long long>(mission.robots) * (mission.ticks + 1);
-  while (runs_.size() >= kMaxKept || kept_robot_ticks() + adding > kMaxKeptRobotTicks) {  // forget the oldest finished run
+  long long kept = LiveRun::robot_ticks(mission);
+  for (const auto& [id, run] : runs_) kept += run->robot_ticks();
+  while (runs_.size() >= kMaxKept || kept > kMaxKeptRobotTicks) {  // forget the oldest finished run
     auto oldest = runs_.begin();
     while (oldest != runs_.end() && !oldest->second->finished()) ++oldest;
     if (oldest == runs_.end()) break;
+    kept -= oldest->second->robot_ticks();
     runs_.erase(oldest);  // a viewer still reading it holds its own reference
   }
   const std::int64_t id = next_id_++;

@@ -13,7 +13,7 @@ void add_run_routes(Routes& routes) {
   routes.post("/api/runs", [](Call& call) -> nlohmann::json {
     ControlSoftware software = parse_control_software(text_field(call.body, "text"));
     Mission mission = load_user_mission(call.home, call.user, text_field(call.body, "mission"));
-    if (static_cast<long long>(mission.robots) * mission.ticks > RunRegistry::kMaxRobotTicks)
+    if (LiveRun::robot_ticks(mission) > RunRegistry::kMaxRobotTicks)
       throw app::InvalidRequest("mission " + mission.name + " has " + std::to_string(mission.robots) + " robots for " +
                                 std::to_string(mission.ticks) + " ticks, more than the " +
                                 std::to_string(RunRegistry::kMaxRobotTicks) +
