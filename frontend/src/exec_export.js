@@ -1,21 +1,13 @@
 // Exec's downloads: the run as a WebM video (MediaRecorder on a canvas drawn as the viewer draws
 // it, with the tick and objective written on it) at a chosen speed and height, and the frame on
 // screen as PNG or SVG. Everything is drawn in the page from the run already received.
+import { download } from './download.js';
 import { Viewer } from './viewer.js';
 import { withDuration } from './webm_duration.js';
 
 const FPS = 30;
 
-export function download(blob, name) {
-  const url = URL.createObjectURL(blob);
-  const a = document.createElement('a');
-  a.href = url;
-  a.download = name;
-  document.body.append(a);
-  a.click();
-  a.remove();
-  setTimeout(() => URL.revokeObjectURL(url), 60000);
-}
+export { download };
 
 /// What the overlay says at tick t.
 function overlayLines(run, t) {

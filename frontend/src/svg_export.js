@@ -1,4 +1,5 @@
 // The drawing as an SVG file, built from cytoscape's node boxes and edge geometry.
+import { download } from './download.js';
 import { edgeLabelBox, labelCentre } from './graph.js';
 
 const esc = (s) => String(s).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;');
@@ -58,13 +59,5 @@ export function graphToSvg(cy) {
 }
 
 export function downloadSvg(cy, filename = 'control-software.svg') {
-  const blob = new Blob([graphToSvg(cy)], { type: 'image/svg+xml' });
-  const url = URL.createObjectURL(blob);
-  const a = document.createElement('a');
-  a.href = url;
-  a.download = filename;
-  document.body.append(a);
-  a.click();
-  a.remove();
-  setTimeout(() => URL.revokeObjectURL(url), 1000);
+  download(new Blob([graphToSvg(cy)], { type: 'image/svg+xml' }), filename);
 }
