@@ -14,6 +14,7 @@
 #include "app/errors.hpp"
 #include "app/experiment_job.hpp"
 #include "control/config_string.hpp"
+#include "core/markup_text.hpp"
 #include "design/design_space.hpp"
 #include "evaluation/results_version.hpp"
 #include "experiments/protocol.hpp"
@@ -319,16 +320,6 @@ std::string inert_in_element(std::string text, const std::string& from, const st
   return text;
 }
 
-std::string html_escape(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else out += c;
-  }
-  return out;
-}
 
 }  // namespace
 
@@ -413,7 +404,7 @@ std::string experiment_report_html(const json& document, const std::filesystem::
   const std::string title =
       "SwarmDesign report: " + document["experiment"]["name"].get<std::string>() + " (" +
       document["experiment"]["project"].get<std::string>() + ")";
-  return "<!doctype html><html><head><meta charset=\"utf-8\"><title>" + html_escape(title) + "</title><style>" + style +
+  return "<!doctype html><html><head><meta charset=\"utf-8\"><title>" + markup_text(title) + "</title><style>" + style +
          "</style></head>\n<body><div id=\"report\"></div>\n<script id=\"report-data\" type=\"application/json\">" + data +
          "</script>\n<script>" + script + "</script></body></html>\n";
 }

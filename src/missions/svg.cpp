@@ -1,5 +1,6 @@
 #include "missions/svg.hpp"
 
+#include "core/markup_text.hpp"
 #include "missions/svg_layers.hpp"
 
 #include <algorithm>
@@ -57,22 +58,6 @@ std::vector<std::uint32_t> wall_colors(const Mission& m) {
     }
   }
   return color;
-}
-
-/// Text from a mission file as SVG character data: a title such as "<script>" stays text.
-std::string xml_text(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (const char c : text) {
-    switch (c) {
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '&': out += "&amp;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
 }
 
 std::vector<std::string> describe_random_events(const Mission& m) {
@@ -145,7 +130,7 @@ std::string mission_svg(const Mission& m) {
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << static_cast<int>(width * 250) << "\" height=\""
       << static_cast<int>(height * 250) << "\" viewBox=\"" << lo.x << " " << -hi.y << " " << width << " " << height
       << "\">\n";
-  out << "<title>" << xml_text(m.title) << " (" << xml_text(m.name) << ")</title>\n";
+  out << "<title>" << markup_text(m.title) << " (" << markup_text(m.name) << ")</title>\n";
   // Outside the arena: a neutral colour that no floor has.
   out << "<rect class=\"outside\" x=\"" << lo.x << "\" y=\"" << -hi.y << "\" width=\"" << width << "\" height=\"" << height
       << "\" fill=\"" << kOutsideColor << "\"/>\n";
@@ -189,7 +174,7 @@ std::string mission_svg(const Mission& m) {
   for (std::size_t i = 0; i < captions.size(); ++i)
     // Text drawn at 1000x and scaled down: renderers hint tiny font sizes badly.
     out << "<text class=\"caption\" transform=\"translate(" << lo.x + 0.3 * line << " " << -lo.y + line * (static_cast<double>(i) + 0.75)
-        << ") scale(0.001)\" font-family=\"sans-serif\" font-size=\"" << line * 650 << "\">" << xml_text(captions[i]) << "</text>\n";
+        << ") scale(0.001)\" font-family=\"sans-serif\" font-size=\"" << line * 650 << "\">" << markup_text(captions[i]) << "</text>\n";
   out << "</svg>\n";
   return out.str();
 }
