@@ -21,14 +21,16 @@
 #include "control/config_string.hpp"
 #include "evaluation/argos_reference.hpp"
 #include "evaluation/evaluator.hpp"
-#include "experiments/statistics.hpp"
+#include "statistics/correlation.hpp"
+#include "statistics/descriptive.hpp"
+#include "statistics/welch.hpp"
 
 namespace {
 
 using namespace sd;
 
-using experiments::mean;
-using experiments::sample_standard_deviation;
+using statistics::mean;
+using statistics::sample_standard_deviation;
 
 nlohmann::json compare_group(const ArgosReferenceGroup& group, const std::string& data, int seeds, ThreadedEvaluator& evaluator) {
   const Mission mission = argos_reference_mission(group);
@@ -43,7 +45,7 @@ nlohmann::json compare_group(const ArgosReferenceGroup& group, const std::string
     std::vector<double> scores(tasks.size());
     evaluator.evaluate(mission, tasks, scores);
     const double ours = mean(scores), theirs = mean(ref.scores), spread = sample_standard_deviation(ref.scores);
-    const double t = experiments::welch_t_test(scores, ref.scores).statistic;
+    const double t = statistics::welch_t_test(scores, ref.scores).statistic;
     const double deviation = spread > 0 ? (ours - theirs) / spread : 0.0;
     stouffer += std::isfinite(t) ? t : 0.0;
     largest = std::max(largest, std::abs(deviation));
@@ -56,8 +58,8 @@ nlohmann::json compare_group(const ArgosReferenceGroup& group, const std::string
   }
   const double z = stouffer / std::sqrt(static_cast<double>(refs.size()));
   const double p = std::erfc(std::abs(z) / std::sqrt(2.0));
-  const double rho = experiments::spearman_rho(agreement.ours, agreement.argos);
-  const double median_ratio = agreement.ratios.empty() ? NAN : experiments::median(agreement.ratios);
+  const double rho = statistics::spearman_rho(agreement.ours, agreement.argos);
+  const double median_ratio = agreement.ratios.empty() ? NAN : statistics::median(agreement.ratios);
   std::printf("== %s: %zu controllers, seeds 1-%d: rho %.3f  median ratio %.3f  max |dev| %.2f sd  above %d below %d  "
               "Stouffer z %+.2f (p %.4f)\n",
               group.name, refs.size(), seeds, rho, median_ratio, largest, agreement.above, agreement.below, z, p);

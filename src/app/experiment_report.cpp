@@ -18,8 +18,11 @@
 #include "design/design_space.hpp"
 #include "evaluation/results_version.hpp"
 #include "experiments/protocol.hpp"
-#include "experiments/statistics.hpp"
 #include "missions/catalogue.hpp"
+#include "statistics/box_stats.hpp"
+#include "statistics/descriptive.hpp"
+#include "statistics/expected_ranks.hpp"
+#include "statistics/rank_sum.hpp"
 #include "storage/clock.hpp"
 #include "storage/design_status.hpp"
 #include "storage/experiments.hpp"
@@ -80,12 +83,8 @@ struct Cell {
   }
 };
 
-double mean(const std::vector<double>& x) {
-  return x.empty() ? 0.0 : std::accumulate(x.begin(), x.end(), 0.0) / static_cast<double>(x.size());
-}
-
 json box_document(const std::string& mission, const std::string& condition, const std::vector<double>& values) {
-  const experiments::BoxStats b = experiments::box_stats(values);
+  const statistics::BoxStats b = statistics::box_stats(values);
   return {{"mission", mission},         {"condition", condition},       {"n", b.n},
           {"min", b.min},               {"q1", b.q1},                   {"median", b.median},
           {"q3", b.q3},                 {"max", b.max},                 {"whisker_low", b.whisker_low},
@@ -132,7 +131,7 @@ json design_document(const storage::ExperimentDesign& d, const std::string& miss
           {"reused_from", d.reused_from ? json(*d.reused_from) : json(nullptr)},
           {"scores", scores},
           {"assessment_seeds", seeds},
-          {"score", mean(scores)},
+          {"score", statistics::mean(scores)},  // a done design has >= 1 assessment: never empty
           {"convergence", std::move(convergence)}};
 }
 
@@ -157,7 +156,7 @@ json boxes_and_tests(const Analysis& a, json& report) {
         const Cell* y = a.cell(m.key, a.conditions[j]);
         if (!x || !y) continue;
         const auto sx = x->scores(), sy = y->scores();
-        const experiments::RankSumTest t = experiments::wilcoxon_rank_sum(sx, sy);
+        const statistics::RankSumTest t = statistics::wilcoxon_rank_sum(sx, sy);
         wilcoxon.push_back({{"mission", m.key},
                             {"a", a.conditions[i]},
                             {"b", a.conditions[j]},
@@ -166,8 +165,8 @@ json boxes_and_tests(const Analysis& a, json& report) {
                             {"W", t.statistic},
                             {"p_value", t.p_value},
                             {"exact", t.exact},
-                            {"better", better_of(a.conditions[i], a.conditions[j], experiments::median(sx),
-                                                 experiments::median(sy), m.maximise, t.p_value)}});
+                            {"better", better_of(a.conditions[i], a.conditions[j], statistics::median(sx),
+                                                 statistics::median(sy), m.maximise, t.p_value)}});
       }
   }
   report["wilcoxon"] = std::move(wilcoxon);
@@ -186,12 +185,12 @@ json friedman_document(const Analysis& a) {
   json blocks = json::array();
   for (const MissionInfo& m : a.missions) {
     std::vector<double> row;
-    for (const auto& c : common) row.push_back(experiments::median(a.cell(m.key, c)->scores()));
+    for (const auto& c : common) row.push_back(statistics::median(a.cell(m.key, c)->scores()));
     values.push_back(std::move(row));
     maximise.push_back(m.maximise);
     blocks.push_back(m.key);
   }
-  const experiments::ExpectedRanks r = experiments::expected_ranks(values, maximise, 1.0 - kAlpha);
+  const statistics::ExpectedRanks r = statistics::expected_ranks(values, maximise, 1.0 - kAlpha);
   json ranks = json::array();
   for (std::size_t i = 0; i < common.size(); ++i) ranks.push_back({{"condition", common[i]}, {"rank", r.mean_ranks[i]}});
   return {{"blocks", blocks},

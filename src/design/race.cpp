@@ -8,7 +8,7 @@
 #include <unordered_set>
 #include <stdexcept>
 
-#include "design/statistics.hpp"
+#include "design/race_test.hpp"
 
 namespace sd::design {
 

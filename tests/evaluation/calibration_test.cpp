@@ -31,7 +31,10 @@
 #include "control/config_string.hpp"
 #include "evaluation/argos_reference.hpp"
 #include "evaluation/evaluator.hpp"
-#include "experiments/statistics.hpp"
+#include "statistics/correlation.hpp"
+#include "statistics/descriptive.hpp"
+#include "statistics/sign_test.hpp"
+#include "statistics/welch.hpp"
 
 namespace sd {
 
@@ -79,8 +82,8 @@ const KnownDeviation* known_deviation(const std::string& group, const std::strin
   return nullptr;
 }
 
-using experiments::mean;
-using experiments::sample_standard_deviation;
+using statistics::mean;
+using statistics::sample_standard_deviation;
 
 class Calibration : public ::testing::TestWithParam<ArgosReferenceGroup> {};
 
@@ -103,7 +106,7 @@ TEST_P(Calibration, ScoresLikeArgos) {
     std::vector<double> scores(tasks.size());
     evaluator.evaluate(mission, tasks, scores);
     const double ours = mean(scores), theirs = mean(ref.scores), spread = sample_standard_deviation(ref.scores);
-    const double p = experiments::welch_t_test(scores, ref.scores).p_value;
+    const double p = statistics::welch_t_test(scores, ref.scores).p_value;
     if (const KnownDeviation* known = known_deviation(group.name, name)) {
       EXPECT_LE(std::abs(ours - theirs), known->max_deviation_sd * spread) << name << " (known deviation): ours " << ours
                                                                              << ", ARGoS " << theirs << " +- " << spread;
@@ -120,13 +123,13 @@ TEST_P(Calibration, ScoresLikeArgos) {
     names.push_back(name);
   }
   const int above = agreement.above, below = agreement.below;
-  const double sign_p = experiments::sign_test_p_value(above, above + below);
+  const double sign_p = statistics::sign_test_p_value(above, above + below);
   if (!seed_bound(group.name)) {
     EXPECT_GE(sign_p, 0.01) << above << " controllers above ARGoS' mean, " << below << " below";
   }
   const std::vector<double>& our_means = agreement.ours;
   const std::vector<double>& argos_means = agreement.argos;
-  const double rho = experiments::spearman_rho(our_means, argos_means);
+  const double rho = statistics::spearman_rho(our_means, argos_means);
   if (group.exact_ranking) {
     std::vector<std::size_t> ours(names.size()), theirs(names.size());
     std::iota(ours.begin(), ours.end(), 0);
@@ -137,7 +140,7 @@ TEST_P(Calibration, ScoresLikeArgos) {
   }
   // max |dev| and min Welch p are over the controllers held to the full gate.
   std::printf("calibration %-18s controllers %2zu  rho %.3f  median ratio %.3f  max |dev| %.2f sd  min Welch p %.4f  above %d below %d (sign p %.3f)\n",
-              group.name, names.size(), rho, experiments::median(agreement.ratios), largest_deviation, smallest_p, above, below, sign_p);
+              group.name, names.size(), rho, statistics::median(agreement.ratios), largest_deviation, smallest_p, above, below, sign_p);
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -1,6 +1,7 @@
-// The report's statistics compared with R, live: each test generates its data sets in C++,
-// runs one Rscript on them and compares every value R prints (sprintf('%.17g')). Tests that
-// need R skip when Rscript is not on the PATH. A few hand-checked cases run without R.
+// The report's and the calibration's statistics compared with R, live: each test generates its
+// data sets in C++, runs one Rscript on them and compares every value R prints
+// (sprintf('%.17g')). Tests that need R skip when Rscript is not on the PATH. A few
+// hand-checked cases run without R.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -19,9 +20,15 @@
 #include <string>
 #include <vector>
 
-#include "experiments/statistics.hpp"
+#include "statistics/box_stats.hpp"
+#include "statistics/correlation.hpp"
+#include "statistics/descriptive.hpp"
+#include "statistics/expected_ranks.hpp"
+#include "statistics/rank_sum.hpp"
+#include "statistics/sign_test.hpp"
+#include "statistics/welch.hpp"
 
-using namespace sd::experiments;
+using namespace sd::statistics;
 
 namespace {
 
@@ -256,7 +263,7 @@ std::vector<Matrix> friedman_data() {
 
 }  // namespace
 
-TEST(experiments_Statistics, RankSumHandExamples) {
+TEST(statistics_Report, RankSumHandExamples) {
   // x entirely below y: W = 0 and P(W <= 0) = 1 / choose(5, 2).
   const RankSumTest below = wilcoxon_rank_sum(std::vector<double>{1, 2, 3}, std::vector<double>{4, 5});
   EXPECT_EQ(below.statistic, 0.0);
@@ -274,7 +281,7 @@ TEST(experiments_Statistics, RankSumHandExamples) {
   EXPECT_EQ(pwilcox(9, 3, 3), 1.0);
 }
 
-TEST(experiments_Statistics, BoxStatsHandExamples) {
+TEST(statistics_Report, BoxStatsHandExamples) {
   const BoxStats b = box_stats(std::vector<double>{4, 100, 2, 1, 3});
   EXPECT_EQ(b.n, 5u);
   EXPECT_EQ(b.min, 1.0);
@@ -290,7 +297,7 @@ TEST(experiments_Statistics, BoxStatsHandExamples) {
   EXPECT_THROW(median(std::vector<double>{}), std::invalid_argument);
 }
 
-TEST(experiments_Statistics, ExpectedRanksHandExamples) {
+TEST(statistics_Report, ExpectedRanksHandExamples) {
   // Block 0 maximised, block 1 minimised: condition 1 is best in both.
   const ExpectedRanks e = expected_ranks({{1, 5}, {7, 2}}, {true, false});
   EXPECT_EQ(e.mean_ranks, (std::vector<double>{2, 1}));
@@ -307,7 +314,7 @@ TEST(experiments_Statistics, ExpectedRanksHandExamples) {
   EXPECT_THROW(expected_ranks({{1}, {2}}, {true, true}), std::invalid_argument);
 }
 
-TEST(experiments_Statistics, RankSumMatchesR) {
+TEST(statistics_Report, RankSumMatchesR) {
   SKIP_WITHOUT_R();
   const auto sets = rank_sum_data();
   std::string script;
@@ -328,7 +335,7 @@ TEST(experiments_Statistics, RankSumMatchesR) {
   }
 }
 
-TEST(experiments_Statistics, PwilcoxMatchesR) {
+TEST(statistics_Report, PwilcoxMatchesR) {
   SKIP_WITHOUT_R();
   struct Case {
     double q;
@@ -355,7 +362,7 @@ TEST(experiments_Statistics, PwilcoxMatchesR) {
   }
 }
 
-TEST(experiments_Statistics, BoxStatsMatchR) {
+TEST(statistics_Report, BoxStatsMatchR) {
   SKIP_WITHOUT_R();
   Data d(4242);
   std::vector<std::pair<std::string, std::vector<double>>> sets{
@@ -398,7 +405,7 @@ TEST(experiments_Statistics, BoxStatsMatchR) {
   }
 }
 
-TEST(experiments_Statistics, ExpectedRanksMatchR) {
+TEST(statistics_Report, ExpectedRanksMatchR) {
   SKIP_WITHOUT_R();
   const auto sets = friedman_data();
   std::string script;
@@ -442,7 +449,7 @@ TEST(experiments_Statistics, ExpectedRanksMatchR) {
 }
 
 // Reference values from R 4.2 (t.test, binom.test, cor(method = "spearman")).
-TEST(experiments_Statistics, WelchTestMatchesR) {
+TEST(statistics_Report, WelchTestMatchesR) {
   const std::vector<double> x{3.1, 4.5, 2.2, 8.9, 5.0, 6.1}, y{7.2, 6.6, 9.1, 8.0, 10.5};
   const WelchTest t = welch_t_test(x, y);
   EXPECT_NEAR(t.statistic, -2.7799873014646894, 1e-12);
@@ -452,14 +459,14 @@ TEST(experiments_Statistics, WelchTestMatchesR) {
   EXPECT_NEAR(welch_t_test(a, b).p_value, 0.0532107998388449, 1e-10);
 }
 
-TEST(experiments_Statistics, WelchTestOnConstantSamplesPassesOnlyWhenEqual) {
+TEST(statistics_Report, WelchTestOnConstantSamplesPassesOnlyWhenEqual) {
   const std::vector<double> zeros(20, 0.0), ones(20, 1.0);
   EXPECT_EQ(welch_t_test(zeros, zeros).p_value, 1.0);
   EXPECT_EQ(welch_t_test(zeros, ones).p_value, 0.0);
   EXPECT_THROW(welch_t_test(std::vector<double>{1.0}, zeros), std::invalid_argument);
 }
 
-TEST(experiments_Statistics, SignTestMatchesR) {
+TEST(statistics_Report, SignTestMatchesR) {
   EXPECT_NEAR(sign_test_p_value(3, 15), 0.03515625, 1e-12);
   EXPECT_NEAR(sign_test_p_value(12, 15), 0.03515625, 1e-12);
   EXPECT_NEAR(sign_test_p_value(7, 15), 1.0, 1e-12);
@@ -468,7 +475,7 @@ TEST(experiments_Statistics, SignTestMatchesR) {
   EXPECT_EQ(sign_test_p_value(0, 0), 1.0);
 }
 
-TEST(experiments_Statistics, SpearmanMatchesR) {
+TEST(statistics_Report, SpearmanMatchesR) {
   EXPECT_NEAR(spearman_rho(std::vector<double>{1, 2, 3, 4, 5}, std::vector<double>{2, 1, 4, 3, 5}), 0.8, 1e-12);
   EXPECT_NEAR(spearman_rho(std::vector<double>{1, 2, 2, 4, 5}, std::vector<double>{2, 1, 4, 4, 5}), 0.763157894736842, 1e-12);
   EXPECT_NEAR(spearman_rho(std::vector<double>{10, 20, 30, 40}, std::vector<double>{4, 3, 2, 1}), -1.0, 1e-12);
