@@ -1,9 +1,9 @@
 #include "app/documents.hpp"
 
 #include <algorithm>
-#include <numeric>
 
 #include "control/config_string.hpp"
+#include "statistics/descriptive.hpp"
 #include "storage/clock.hpp"
 
 namespace sd::app {
@@ -165,12 +165,7 @@ json mission_document(const Mission& m) {
 }
 
 ScoreSummary summarize(const std::vector<double>& scores) {
-  if (scores.empty()) return {};
-  std::vector<double> sorted = scores;
-  std::sort(sorted.begin(), sorted.end());
-  const std::size_t n = sorted.size();
-  const double median = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
-  return {std::accumulate(scores.begin(), scores.end(), 0.0) / static_cast<double>(n), median};
+  return {statistics::mean(scores), statistics::median(scores)};
 }
 
 json scores_document(const Mission& mission, const ControlSoftware& software, const std::vector<std::uint64_t>& seeds,

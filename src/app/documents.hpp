@@ -37,6 +37,7 @@ nlohmann::json mission_document(const Mission& mission);
 struct ScoreSummary {
   double mean = 0.0, median = 0.0;
 };
+/// R's mean and median of the scores; throws std::invalid_argument on none (statistics/descriptive).
 ScoreSummary summarize(const std::vector<double>& scores);
 nlohmann::json scores_document(const Mission& mission, const ControlSoftware& software,
                                const std::vector<std::uint64_t>& seeds, const std::vector<double>& scores);

@@ -18,6 +18,7 @@
 #include "core/rng.hpp"
 #include "design/sampling.hpp"
 #include "missions/catalogue.hpp"
+#include "statistics/descriptive.hpp"
 #include "storage/design_store.hpp"
 
 namespace sd::app {
@@ -143,7 +144,7 @@ void assess_design(storage::Experiments& store, const storage::ExperimentDesign&
   const std::vector<double> scores = score_seeds(mission, software, seeds, score_options);
   store.record_assessment(d.id, seeds, scores);
   if (options.observer)
-    options.observer->design_done(d, std::accumulate(scores.begin(), scores.end(), 0.0) / static_cast<double>(scores.size()));
+    options.observer->design_done(d, statistics::mean(scores));
 }
 
 std::string mission_label(const std::string& reference) {
