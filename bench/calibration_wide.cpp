@@ -23,6 +23,7 @@
 #include "evaluation/evaluator.hpp"
 #include "statistics/correlation.hpp"
 #include "statistics/descriptive.hpp"
+#include "statistics/stouffer.hpp"
 #include "statistics/welch.hpp"
 
 namespace {
@@ -35,7 +36,8 @@ using statistics::sample_standard_deviation;
 nlohmann::json compare_group(const ArgosReferenceGroup& group, const std::string& data, int seeds, ThreadedEvaluator& evaluator) {
   const Mission mission = argos_reference_mission(group);
   ArgosAgreement agreement;
-  double stouffer = 0.0, largest = 0.0;
+  double largest = 0.0;
+  std::vector<double> welch_t;  // per controller, an undefined t (both samples constant) as 0
   nlohmann::json rows = nlohmann::json::array();
   const std::vector<ArgosReferenceController> refs = read_argos_reference(data, group);
   for (const ArgosReferenceController& ref : refs) {
@@ -47,7 +49,7 @@ nlohmann::json compare_group(const ArgosReferenceGroup& group, const std::string
     const double ours = mean(scores), theirs = mean(ref.scores), spread = sample_standard_deviation(ref.scores);
     const double t = statistics::welch_t_test(scores, ref.scores).statistic;
     const double deviation = spread > 0 ? (ours - theirs) / spread : 0.0;
-    stouffer += std::isfinite(t) ? t : 0.0;
+    welch_t.push_back(std::isfinite(t) ? t : 0.0);
     largest = std::max(largest, std::abs(deviation));
     agreement.add(ours, theirs);
     std::printf("%-18s %-4s argos %10.2f (sd %9.2f)  ours %10.2f (sd %9.2f)  ratio %6.2f  dev %+6.2f sd  t %+6.2f\n", group.name,
@@ -56,8 +58,7 @@ nlohmann::json compare_group(const ArgosReferenceGroup& group, const std::string
     rows.push_back({{"controller", ref.name}, {"argos_mean", theirs}, {"argos_sd", spread}, {"ours_mean", ours},
                     {"ours_sd", sample_standard_deviation(scores)}, {"deviation_sd", deviation}, {"welch_t", t}});
   }
-  const double z = stouffer / std::sqrt(static_cast<double>(refs.size()));
-  const double p = std::erfc(std::abs(z) / std::sqrt(2.0));
+  const auto [z, p] = statistics::stouffer_z(welch_t);
   const double rho = statistics::spearman_rho(agreement.ours, agreement.argos);
   const double median_ratio = agreement.ratios.empty() ? NAN : statistics::median(agreement.ratios);
   std::printf("== %s: %zu controllers, seeds 1-%d: rho %.3f  median ratio %.3f  max |dev| %.2f sd  above %d below %d  "

@@ -16,6 +16,7 @@
 #include "statistics/rank_sum.hpp"
 #include "statistics/ranks.hpp"
 #include "statistics/signed_rank.hpp"
+#include "statistics/stouffer.hpp"
 #include "statistics/welch.hpp"
 
 using namespace sd::statistics;
@@ -117,4 +118,15 @@ TEST(statistics_EdgeCases, ExpectedRanksWithOneBlockHaveNoCriticalDifference) {
   const ExpectedRanks e = expected_ranks({{3, 2, 1}}, {false}, 0.95);
   EXPECT_EQ(e.mean_ranks, (std::vector<double>{3, 2, 1}));
   EXPECT_FALSE(e.critical_difference.has_value());
+}
+
+TEST(statistics_EdgeCases, StoufferCombinesScoresAndRefusesNone) {
+  // R: z <- sum(c(1, 1, 1, 1)) / sqrt(4); 2 * pnorm(-abs(z)) -> 2, 0.045500263896358417
+  const StoufferTest s = stouffer_z(std::vector<double>{1, 1, 1, 1});
+  EXPECT_EQ(s.z, 2.0);
+  EXPECT_NEAR(s.p_value, 0.045500263896358417, 1e-15);
+  const StoufferTest balanced = stouffer_z(std::vector<double>{1.5, -1.5});
+  EXPECT_EQ(balanced.z, 0.0);
+  EXPECT_EQ(balanced.p_value, 1.0);
+  EXPECT_THROW(stouffer_z(kEmpty), std::invalid_argument);
 }
