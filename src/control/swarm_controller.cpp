@@ -101,6 +101,7 @@ inline Actuation SwarmController::step_fsm(int robot, const ReferenceModel& rm, 
 
 Actuation SwarmController::step_tree(int robot, const ReferenceModel& rm, Rng& rng) {
   Actuation out{0.0, 0.0};
+  current_[static_cast<std::size_t>(robot)] = -1;  // until an action runs at this step
   TreeTick t{static_cast<std::size_t>(robot), rm, rng, out};
   const Status status = tick(t, 0);
   if (status != Status::Running) return {0.0, 0.0, out.led};  // the tree ended: stop this step

@@ -34,7 +34,8 @@ class SwarmController {
     const auto state = static_cast<std::size_t>(current_[r]);
     return entering_[r] ? behaviour_inputs_[state] : state_inputs_[state];
   }
-  /// FSM: the robot's current state; behaviour tree: the action that ran last (-1: none).
+  /// FSM: the robot's current state; behaviour tree: the action that ran at the last step
+  /// (-1: none, the tree ended and the robot stood still).
   int current_state(int robot) const { return current_[static_cast<std::size_t>(robot)]; }
 
  private:

@@ -16,12 +16,14 @@
 //      floor filter (10 steps; Arlequin's floor conditions too), behaviours 32-35 keeping their
 //      counters across states, grid exploration scored / 1000 (December 2026).
 //      Versions 3 and 4 score the catalogue's missions differently, so none of their runs go on.
+//   6: TuttiFrutti's floor conditions read RM1.2's filter (< 0.03 / > 0.85), as the RM3.0 of
+//      its code base (demiurge-epuck-dao branch tuttifrutti) does, not 0.1 / 0.8 (December 2026).
 namespace sd {
 
-inline constexpr int kResultsVersion = 5;
+inline constexpr int kResultsVersion = 6;
 
 /// True if runs kept under `version` score as this build's for a swarm of `robots` (a new
-/// version may keep older runs that it scores alike; version 5 keeps none).
+/// version may keep older runs that it scores alike; version 6 keeps none).
 constexpr bool scores_as_this_build(int version, [[maybe_unused]] int robots) { return version == kResultsVersion; }
 
 }  // namespace sd

@@ -48,6 +48,9 @@ class Simulation {
   const Mission& mission() const { return *mission_; }
   const SwarmState& swarm() const { return swarm_; }
   int fsm_state(int robot) const { return controller_.current_state(robot); }
+  const ControlSoftware& software() const { return software_; }
+  /// What the robot's control step read at the last tick (traces).
+  const ReferenceModel& reference_model(int robot) const { return reference_[static_cast<std::size_t>(robot)]; }
   /// Finds pairs with the neighbour grid or among all pairs; by default whichever is faster
   /// for the mission's swarm. Scores are the same either way (tests and benchmarks).
   void use_neighbour_grid(bool on) { swarm_.use_neighbour_grid(on); }

@@ -42,11 +42,12 @@ bool check_condition(const ModuleInstance& c, const ReferenceModel& rm, Rng& rng
   // Every flavour's conditions 0-5 are Chocolate's. The ids are listed rather than taken
   // modulo 10: conditions are checked for every robot at every step.
   switch (c.id) {
-    case 10: case 40:  // BlackFloor
+    // TuttiFrutti's RM3.0 (demiurge-epuck-dao branch tuttifrutti) filters the floor as RM1.2.
+    case 10: case 20: case 40:  // BlackFloor
       return rm.ground <= 0.1 && rng.bernoulli(prm[0]);
-    case 11: case 41:  // GrayFloor
+    case 11: case 21: case 41:  // GrayFloor
       return rm.ground > 0.1 && rm.ground < 0.95 && rng.bernoulli(prm[0]);
-    case 12: case 42:  // WhiteFloor
+    case 12: case 22: case 42:  // WhiteFloor
       return rm.ground >= 0.95 && rng.bernoulli(prm[0]);
     // Coconut and Arlequin run on Demiurge's RM3.0, whose floor filter keeps 10 steps.
     case 30: case 50:
@@ -55,13 +56,6 @@ bool check_condition(const ModuleInstance& c, const ReferenceModel& rm, Rng& rng
       return rm.ground_demiurge > 0.1 && rm.ground_demiurge < 0.95 && rng.bernoulli(prm[0]);
     case 32: case 52:
       return rm.ground_demiurge >= 0.95 && rng.bernoulli(prm[0]);
-    // TuttiFrutti runs on RM3.0, whose floor filter has its own thresholds.
-    case 20:
-      return rm.ground_rm3 <= 0.1 && rng.bernoulli(prm[0]);
-    case 21:
-      return rm.ground_rm3 > 0.1 && rm.ground_rm3 < 0.95 && rng.bernoulli(prm[0]);
-    case 22:
-      return rm.ground_rm3 >= 0.95 && rng.bernoulli(prm[0]);
     case 13: case 23: case 33: case 43: case 53:  // NeighborsCount
       return rng.bernoulli(lookup_neighbours_probability(c, rm.neighbours, table));
     case 14: case 24: case 34: case 44: case 54:  // InvertedNeighborsCount

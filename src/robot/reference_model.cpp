@@ -62,12 +62,10 @@ void ReferenceModel::update_ground() {
   // Majority over the last 5 steps x 3 sensors (more than 10 of 15 samples). Each step's
   // black and white counts are kept, so the window sum is updated, not recounted.
   const auto slot = static_cast<std::size_t>(ground_slot);
-  std::uint8_t black = 0, white = 0, black3 = 0, white3 = 0, black_demi = 0, white_demi = 0;
+  std::uint8_t black = 0, white = 0, black_demi = 0, white_demi = 0;
   for (const double g : raw_ground) {  // counted without branches: noisy readings
     black = static_cast<std::uint8_t>(black + (g < 0.03 ? 1 : 0));
     white = static_cast<std::uint8_t>(white + (g > 0.85 ? 1 : 0));
-    black3 = static_cast<std::uint8_t>(black3 + (g < 0.1 ? 1 : 0));
-    white3 = static_cast<std::uint8_t>(white3 + (g > 0.8 ? 1 : 0));
     black_demi = static_cast<std::uint8_t>(black_demi + (g < 0.02 ? 1 : 0));
     white_demi = static_cast<std::uint8_t>(white_demi + (g > 0.97 ? 1 : 0));
   }
@@ -82,13 +80,8 @@ void ReferenceModel::update_ground() {
   window_white += white - ground_white[slot];
   ground_black[slot] = black;
   ground_white[slot] = white;
-  window_black3 += black3 - ground_black3[slot];
-  window_white3 += white3 - ground_white3[slot];
-  ground_black3[slot] = black3;
-  ground_white3[slot] = white3;
   ground_slot = next_slot(ground_slot, kGroundHistory);
   ground = window_black > 10 ? 0.0 : (window_white > 10 ? 1.0 : 0.5);
-  ground_rm3 = window_black3 > 10 ? 0.0 : (window_white3 > 10 ? 1.0 : 0.5);
 }
 
 void ReferenceModel::update_proximity() {

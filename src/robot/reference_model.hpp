@@ -23,12 +23,11 @@ struct ReferenceModel {
   static constexpr std::array<double, 3> kNoReadings3{};
 
   // --- processed inputs of the current control step ---
-  double ground = 0.5;          // majority-filtered floor: 0 black, 0.5 gray, 1 white
-  // The same filter with RM3.0's thresholds (demiurge-epuck-dao ReferenceModel3Dot0
-  // GetGroundReading: black below 0.1, else white above 0.8), which TuttiFrutti's floor
-  // conditions read. With RM1.x's 0.03 a noisy black floor (0 + U(-0.05, 0.05)) passes only
-  // 80 % of samples, so a robot on black reads gray at about one step in six.
-  double ground_rm3 = 0.5;
+  // Majority-filtered floor: 0 black, 0.5 gray, 1 white. TuttiFrutti's RM3.0 (demiurge-epuck-dao
+  // branch tuttifrutti 0d55891) filters alike: 5 steps, < 0.03 and > 0.85. A noisy black floor
+  // (0 + U(-0.05, 0.05)) passes 80 % of samples, so a robot on black reads gray at about one
+  // step in six; ARGoS' set-4 traces show it.
+  double ground = 0.5;
   // Demiurge's RM3.0 (the Coconut and Arlequin code base, AmmarHsn/demiurge-epuck-dao): the
   // last 10 steps (30 readings); black if more than 8 are below 0.02, else white if more than
   // 8 are above 0.97, else gray. The Coconut and Arlequin floor conditions read it.
@@ -61,8 +60,6 @@ struct ReferenceModel {
   static constexpr int kRabBufferSteps = 11;  // messages of this step and of the 10 before
   std::array<std::uint8_t, kGroundHistory> ground_black{}, ground_white{};  // per step
   int window_black = 0, window_white = 0;                                   // over the window
-  std::array<std::uint8_t, kGroundHistory> ground_black3{}, ground_white3{};  // RM3.0 thresholds
-  int window_black3 = 0, window_white3 = 0;
   int ground_slot = 0;                        // the slot the next step overwrites
   static constexpr int kDemiurgeGroundHistory = 10;
   std::array<std::uint8_t, kDemiurgeGroundHistory> ground_black_demiurge{}, ground_white_demiurge{};

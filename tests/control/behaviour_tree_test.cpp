@@ -98,6 +98,7 @@ TEST(BehaviourTreeTicks, SequenceStarStaysOnABranchUntilItsConditionHolds) {
   a = r.step(c, 1.0);
   EXPECT_EQ(a.left_cm, 0.0);
   EXPECT_EQ(a.right_cm, 0.0);
+  EXPECT_EQ(c.current_state(0), -1);  // no action ran at this step
   // ... and the next step starts again from branch 0.
   r.step(c, 0.5);
   EXPECT_EQ(c.current_state(0), 3);
@@ -150,10 +151,11 @@ TEST(BehaviourTreeTicks, NeighbourConditionsDrawWithTheirOwnLogistic) {
   SwarmController c(t, 4);
   Rng rng(47), expected(47);
   ReferenceModel rm;
-  int ran = -1, first = 0, second = 0;
+  int ran, first = 0, second = 0;
   for (int k = 0; k < 3000; ++k) {
     rm.neighbours = k % 7;
     c.step(2, rm, rng);
+    ran = -1;
     if (expected.bernoulli(neighbours_probability(2, 1.5, rm.neighbours))) {
       ran = 3;
       ++first;

@@ -59,13 +59,13 @@ TEST(Cli, TraceHasARowPerRobotPerTickAndEndsOnTheScore) {
   std::string line, last;
   int rows = 0;
   std::getline(in, line);
-  EXPECT_EQ(line, "tick,robot,x,y,yaw,v_left,v_right,state,led,objective");
+  EXPECT_EQ(line, "tick,robot,x,y,yaw,v_left,v_right,state,behaviour,ground,led,objective");
   while (std::getline(in, line)) {
     ++rows;
     last = line;
   }
   EXPECT_EQ(rows, 1201 * 20);
-  EXPECT_EQ(last.rfind("1200,19,", 0), 0u);
+  EXPECT_EQ(last.rfind("1200,epuck19,", 0), 0u);
   const std::string score = r.out.substr(6, r.out.size() - 7);
   EXPECT_EQ(last.substr(last.rfind(',') + 1), score);
   std::filesystem::remove(path);

@@ -16,7 +16,6 @@ TEST(DemiurgeFloorConditions, ReadDemiurgesGroundFilter) {
     SCOPED_TRACE(base);
     ReferenceModel rm;
     rm.ground = 0.5;  // RM1.x: gray
-    rm.ground_rm3 = 0.5;
     rm.ground_demiurge = 0.0;  // Demiurge's RM3.0: black
     Rng rng(1);
     EXPECT_TRUE(check_condition(module(base, {1.0}), rm, rng));

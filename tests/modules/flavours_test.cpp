@@ -155,7 +155,6 @@ TEST(Coconut, AStimulusOverridesTheScheme) {
 TEST(Flavours, EveryFlavoursConditionsAreChocolates) {
   ReferenceModel rm;
   rm.ground = 0.0;
-  rm.ground_rm3 = 0.0;  // TuttiFrutti's floor conditions read RM3.0's filter (tutti_floor_conditions_test)
   rm.ground_demiurge = 0.0;  // Coconut's read Demiurge's RM3.0 filter (ground_filter_demiurge_test)
   rm.neighbours = 4;
   for (const int base : {10, 20, 30, 40, 50}) {
