@@ -45,5 +45,10 @@ class FileScope {
 /// InvalidRequest for an unknown name or a malformed file (naming the bad field), the scope's
 /// refusals otherwise.
 Mission load_requested_mission(const std::string& name_or_path, const FileScope& scope = FileScope::local());
+/// The mission run with the Arlequin module set the user named (--arlequin-modules:
+/// swarmdesign, demiurge or a folder the scope lets them read); `mission` itself if the name
+/// is empty. InvalidRequest in one line for a bad set.
+Mission with_requested_arlequin_modules(const Mission& mission, const std::string& name_or_folder,
+                                        const FileScope& scope = FileScope::local());
 
 }  // namespace sd::app

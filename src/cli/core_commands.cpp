@@ -78,7 +78,7 @@ void register_mission_show(CLI::App& app) {
 void register_evaluate(CLI::App& app, Context& context) {
   auto* cmd = app.add_subcommand("evaluate", "Simulate control software on a mission and print its score per seed");
   struct Options {
-    std::string mission, seeds, trace, render;
+    std::string mission, seeds, trace, render, arlequin_modules;
     int render_every = 10;
     std::uint64_t seed = 1;
     int threads = 0;
@@ -96,6 +96,9 @@ void register_evaluate(CLI::App& app, Context& context) {
   cmd->add_option("--render-every", o->render_every, "Ticks between two --render frames (default 10: one a second)")
       ->check(CLI::PositiveNumber)
       ->needs(render);
+  cmd->add_option("--arlequin-modules", o->arlequin_modules,
+                  "Arlequin module set that runs modules 50-55: swarmdesign (the shipped networks, default), demiurge "
+                  "(Demiurge's networks and machinery) or a folder of the six weight documents");
   cmd->add_flag("--json", o->json, "Print one JSON document");
   add_control_software_options(*cmd, o->software);
   cmd->footer(
@@ -103,7 +106,7 @@ void register_evaluate(CLI::App& app, Context& context) {
       "Example: swarmdesign evaluate --mission aac --seeds 1-20 --fsm-config --nstates 1 --s0 10 --rwm0 50\n"
       "A video from --render frames: ffmpeg -framerate 10 -pattern_type glob -i 'DIR/*.svg' run.webm");
   cmd->callback([o, &context] {
-    const Mission mission = app::load_requested_mission(o->mission);
+    const Mission mission = app::with_requested_arlequin_modules(app::load_requested_mission(o->mission), o->arlequin_modules);
     const ControlSoftware software = read_control_software(context, o->software);
     const std::vector<std::uint64_t> seeds =
         o->seeds.empty() ? std::vector<std::uint64_t>{o->seed} : app::parse_seed_range(o->seeds);

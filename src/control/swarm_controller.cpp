@@ -7,8 +7,9 @@
 
 namespace sd {
 
-SwarmController::SwarmController(const ControlSoftware& software, int robots)
+SwarmController::SwarmController(const ControlSoftware& software, int robots, const arlequin::ModuleSet* arlequin)
     : software_(&software),
+      arlequin_(arlequin),
       slots_(static_cast<int>(software.architecture == Architecture::Fsm             ? software.fsm.states.size()
                               : software.architecture == Architecture::BehaviourTree ? software.bt.nodes.size()
                                                                                      : 0)) {
@@ -79,7 +80,7 @@ inline Actuation SwarmController::step_fsm(int robot, const ReferenceModel& rm, 
   const FsmState& state = software_->fsm.states[current];
   BehaviourMemory& memory = memory_[r * static_cast<std::size_t>(slots_) + current];
   if (entering_[r] && resets_on_state_entry(state.behaviour.id)) reset_behaviour(memory);
-  const Actuation actuation = run_behaviour(state.behaviour, memory, rm, rng);
+  const Actuation actuation = run_module(state.behaviour, memory, rm, rng);
   if (entering_[r]) {
     entering_[r] = 0;
     return actuation;
@@ -125,7 +126,7 @@ inline SwarmController::Status SwarmController::tick_action(TreeTick& t, int nod
   // Actions are not reset when they become active again (their memory persists).
   if (node.success_probability > 0.0 && t.rng.bernoulli(node.success_probability)) return Status::Success;
   const std::size_t slot = t.robot * static_cast<std::size_t>(slots_) + static_cast<std::size_t>(node_index);
-  t.out = run_behaviour(node.module, memory_[slot], t.rm, t.rng);
+  t.out = run_module(node.module, memory_[slot], t.rm, t.rng);
   current_[t.robot] = static_cast<std::int16_t>(node_index);
   return Status::Running;
 }

@@ -9,6 +9,7 @@
 
 #include "control/control_software.hpp"
 #include "core/rng.hpp"
+#include "modules/arlequin_module_set.hpp"
 #include "modules/behaviours.hpp"
 #include "robot/reference_model.hpp"
 
@@ -16,9 +17,11 @@ namespace sd {
 
 class SwarmController {
  public:
-  /// Keeps a reference to `software`, which must outlive the controller.
-  SwarmController(const ControlSoftware& software, int robots);
-  SwarmController(ControlSoftware&&, int) = delete;
+  /// Keeps a reference to `software`, which must outlive the controller, and to `arlequin`,
+  /// the module set that runs modules 50-55 (nullptr: the shipped networks, SwarmDesign's
+  /// machinery), which must too.
+  SwarmController(const ControlSoftware& software, int robots, const arlequin::ModuleSet* arlequin = nullptr);
+  SwarmController(ControlSoftware&&, int, const arlequin::ModuleSet* = nullptr) = delete;
 
   /// Start of a run: every robot in state 0 / at the tree's first child, memories cleared.
   void reset();
@@ -40,6 +43,12 @@ class SwarmController {
 
  private:
   enum class Status : std::uint8_t { Success, Failure, Running };
+
+  /// run_behaviour, except that a module set given to the constructor runs modules 50-55.
+  Actuation run_module(const ModuleInstance& behaviour, BehaviourMemory& memory, const ReferenceModel& rm, Rng& rng) const {
+    if (arlequin_ && arlequin::is_module(behaviour.id)) return arlequin_->drive(behaviour.id, memory, rm, rng);
+    return run_behaviour(behaviour, memory, rm, rng);
+  }
 
   /// FSM step (as ARGoS3-AutoMoDe's AutoMoDeFiniteStateMachine::ControlStep): on the step a
   /// state is entered its behaviour is reset and no condition is checked; otherwise outgoing
@@ -74,6 +83,7 @@ class SwarmController {
   }
 
   const ControlSoftware* software_;
+  const arlequin::ModuleSet* arlequin_;
   int slots_;                             // states (FSM) or nodes (tree) per robot
   std::vector<std::int16_t> current_;     // FSM state or last action, per robot
   std::vector<std::uint8_t> entering_;    // FSM: entering the current state

@@ -20,6 +20,7 @@ struct ArgosReferenceGroup {
   const char* catalogue_mission;
   double duration_s;    // 0: the catalogue mission's; else ARGoS ran it this long
   bool exact_ranking;   // the group's controllers must rank exactly as in ARGoS
+  const char* arlequin_modules = "";  // the module set ARGoS' 50-55 were ("": the mission's)
 };
 
 /// Every group of the calibration set, in the order the README's tables list them.
@@ -32,8 +33,9 @@ struct ArgosReferenceController {
   std::vector<double> scores;  // ARGoS' scores, seeds 1, 2, ... in order
 };
 
-/// The group's controllers, by name, from `folder`/group.file. Throws std::runtime_error
-/// naming the file and line when the file is missing or malformed, or seeds are out of order.
+/// The group's controllers, by name, from `folder`/group.file, each configuration string once.
+/// Throws std::runtime_error naming the file and line when the file is missing or malformed,
+/// or seeds are out of order.
 std::vector<ArgosReferenceController> read_argos_reference(const std::string& folder, const ArgosReferenceGroup& group);
 
 /// A group's means, ours and ARGoS', controller by controller, and how many of ours lie above

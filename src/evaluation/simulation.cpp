@@ -8,7 +8,7 @@ namespace sd {
 Simulation::Simulation(const Mission& mission, const ControlSoftware& software)
     : mission_(&mission),
       software_(software),
-      controller_(software_, mission.robots),
+      controller_(software_, mission.robots, mission.arlequin_modules.get()),
       objective_(mission) {
   swarm_.resize(mission.robots, static_cast<int>(mission.arena.leds.size()));
   physics_.reset(mission.robots);

@@ -3,6 +3,7 @@
 // Missions are data (JSON files in missions/ or anywhere a user puts them); loading one
 // validates every field and compiles the arena once, so evaluations only read it.
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -21,6 +22,7 @@
 #include "missions/objective_region_count.hpp"
 #include "missions/objective_stop_then_move.hpp"
 #include "missions/start_distribution.hpp"
+#include "modules/arlequin_module_set.hpp"
 #include "simulator/arena.hpp"
 #include "simulator/region.hpp"
 #include "simulator/robot_model.hpp"
@@ -77,6 +79,10 @@ struct Mission {
   std::vector<MissionEvent> events;     // TuttiFrutti LED colours
   ObjectiveSpec objective;
   std::optional<ArgosLoopFunctions> argos_loop_functions;
+  /// Field "arlequin_modules": the module set that runs Arlequin's modules 50-55
+  /// ("swarmdesign", "demiurge" or a folder); null when the field is absent, which runs the
+  /// shipped networks exactly as "swarmdesign" does. The digest covers a folder's weights.
+  std::shared_ptr<const arlequin::ModuleSet> arlequin_modules;
 
   /// One start position, as placement draws it (before rejecting overlaps).
   Vec2 draw_start(Rng& rng) const;
@@ -89,5 +95,9 @@ struct MissionError : std::runtime_error {
 
 Mission parse_mission(const std::string& json_text, const std::string& source);
 Mission load_mission_file(const std::filesystem::path& path);
+/// The mission with its "arlequin_modules" field set to `name_or_folder` (a folder made
+/// absolute from the current one), re-read so that its document and digest say so (what a
+/// design records and an MPI rank rebuilds). MissionError naming the field if the set is bad.
+Mission with_arlequin_modules(const Mission& mission, const std::string& name_or_folder);
 
 }  // namespace sd

@@ -268,11 +268,27 @@ void check_swarm_fits(const Field& root, const Mission& m) {
 /// The digest of the document without the fields that only describe it (and "argos", which
 /// only the ARGoS export reads); keys come out
 /// sorted and without spaces, so layout and comments do not count either.
-std::string runs_digest(json document) {
+std::string runs_digest(json document, const arlequin::ModuleSet* arlequin_modules) {
   for (const char* descriptive : {"title", "origin", "description", "argos"}) document.erase(descriptive);
   Fnv1a f;
   f.add(document.dump());
+  if (arlequin_modules) f.add(arlequin_modules->digest);  // a folder's files may change
   return f.hex();
+}
+
+/// "swarmdesign", "demiurge", or a folder: relative to the mission file's folder when the
+/// mission was read from a file, else to the current folder.
+std::shared_ptr<const arlequin::ModuleSet> read_arlequin_modules(const Field& f, const std::string& source) {
+  std::string name = f.text();
+  if (!arlequin::builtin_module_set(name) && std::filesystem::path(name).is_relative()) {
+    const std::filesystem::path file(source);
+    if (file.has_parent_path() && std::filesystem::is_regular_file(file)) name = (file.parent_path() / name).string();
+  }
+  try {
+    return arlequin::load_module_set(name);
+  } catch (const std::runtime_error& e) {
+    f.fail(e.what());
+  }
 }
 
 }  // namespace
@@ -287,10 +303,12 @@ Mission parse_mission(const std::string& json_text, const std::string& source) {
     throw MissionError("not valid JSON: " + json_syntax_error(e, json_text));
   }
   const Field root(document, "");
-  root.only({"name", "title", "origin", "description", "duration", "robots", "arena", "start", "robot", "arrest", "events", "objective", "argos"});
+  root.only({"name", "title", "origin", "description", "duration", "robots", "arena", "start", "robot", "arrest", "events", "objective", "argos",
+             "arlequin_modules"});
   Mission m;
   m.source = source;
-  m.digest = runs_digest(document);
+  if (root.has("arlequin_modules")) m.arlequin_modules = read_arlequin_modules(root.at("arlequin_modules"), source);
+  m.digest = runs_digest(document, m.arlequin_modules.get());
   m.document = json_text;
   m.name = root.at("name").text();
   if (m.name.empty() || m.name.find_first_of("/ \t") != std::string::npos)
@@ -321,6 +339,17 @@ Mission parse_mission(const std::string& json_text, const std::string& source) {
   check_swarm_fits(root, m);
   m.arena.compile();
   return m;
+}
+
+Mission with_arlequin_modules(const Mission& mission, const std::string& name_or_folder) {
+  json document = json::parse(mission.document, nullptr, true, /*ignore_comments=*/true);
+  // A folder by absolute path, so the document reads the same set from anywhere; anything
+  // else as given, for parse_mission to accept or name in its error.
+  std::error_code ec;
+  const bool folder = !arlequin::builtin_module_set(name_or_folder) && std::filesystem::is_directory(name_or_folder, ec);
+  document["arlequin_modules"] =
+      folder ? std::filesystem::absolute(name_or_folder).lexically_normal().string() : name_or_folder;
+  return parse_mission(document.dump(1), mission.source);
 }
 
 Mission load_mission_file(const std::filesystem::path& path) {

@@ -29,6 +29,10 @@ const std::array<Vec2, 4> kDiagonals = make_diagonals();
 
 }  // namespace
 
+void set_neighbour_direction_inputs(Vec2 centre, Inputs& x) {
+  for (std::size_t k = 0; k < 4; ++k) x[kNeighbourDirectionInput + k] = std::max(0.0, dot(centre, kDiagonals[k]));
+}
+
 Inputs encode_inputs(const ReferenceModel& rm) {
   Inputs x{};
   for (std::size_t k = 0; k < 8; ++k) {
@@ -40,8 +44,7 @@ Inputs encode_inputs(const ReferenceModel& rm) {
     x[kGroundInput + k] = rm.ground <= 0.1 ? 0.0 : (rm.ground >= 0.95 ? 1.0 : rm.raw_ground[k]);
   x[kNeighbourCountInput] = 1.0 - 2.0 / (1.0 + math::exp(static_cast<double>(rm.neighbours)));
   if (const int messages = rm.buffered_messages(); messages > 0) {
-    const Vec2 centre = rm.neighbour_position_sum() * (1.0 / static_cast<double>(messages));
-    for (std::size_t k = 0; k < 4; ++k) x[kNeighbourDirectionInput + k] = std::max(0.0, dot(centre, kDiagonals[k]));
+    set_neighbour_direction_inputs(rm.neighbour_position_sum() * (1.0 / static_cast<double>(messages)), x);
   }
   x[kBiasInput] = 1.0;
   return x;

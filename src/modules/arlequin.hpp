@@ -23,7 +23,11 @@ inline constexpr double kWeightBound = 5.0;        // EvoStick keeps weights in 
 using Inputs = std::array<double, kInputs>;
 using Weights = std::array<double, kWeights>;
 
-/// The 25 inputs (RM1.1 encoding of ARGoS3-NEAT's NeuralNetworkRM1Dot1, used by EvoStick):
+/// Inputs 20-23 from c, the mean position of the buffered messages: max(0, c . u_k), u_k the
+/// unit vector at 45 + 90 k degrees.
+void set_neighbour_direction_inputs(Vec2 centre, Inputs& x);
+
+/// The 25 inputs with SwarmDesign's machinery (RM1.1 encoding of ARGoS3-NEAT's NeuralNetworkRM1Dot1, used by EvoStick):
 ///   0-7 raw proximity, 8-15 raw light,
 ///   16-18 ground left, centre, right: 0 on a black floor and 1 on a white one (5-step
 ///         majority); on grey, the sensor's own simulated raw reading. DEMI draws grey values

@@ -18,6 +18,7 @@ struct BehaviourMemory {
   std::int32_t turn_steps = 0;
   std::int32_t walk_steps = 0; // Coconut random turn / random walk
   double walk_angle = 0.0;
+  std::int32_t steps_in_state = 0;  // Arlequin, Demiurge's machinery: steps since entry (capped)
 };
 
 /// A behaviour that does not touch the LEDs leaves them as they are (AutoMoDe keeps the

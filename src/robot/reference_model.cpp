@@ -40,6 +40,22 @@ int ReferenceModel::buffered_messages() const {
   return messages;
 }
 
+Vec2 ReferenceModel::recent_neighbour_position_sum(int steps, int& messages) const {
+  if (steps >= kRabBufferSteps) {  // the whole buffer, summed as neighbour_position_sum does
+    messages = buffered_messages();
+    return neighbour_position_sum();
+  }
+  messages = 0;
+  Vec2 sum;
+  int slot = rab_slot;  // the slot after this step's
+  for (int k = 0; k < steps; ++k) {
+    slot = slot == 0 ? kRabBufferSteps - 1 : slot - 1;
+    sum += rab_position_steps[static_cast<std::size_t>(slot)];
+    messages += rab_message_steps[static_cast<std::size_t>(slot)];
+  }
+  return sum;
+}
+
 void ReferenceModel::update(const SwarmState& swarm, int robot) {
   const auto r = static_cast<std::size_t>(robot);
   raw_proximity = swarm.proximity[r];
@@ -74,6 +90,12 @@ void ReferenceModel::update_ground() {
   window_white_demiurge += white_demi - ground_white_demiurge[demi];
   ground_black_demiurge[demi] = black_demi;
   ground_white_demiurge[demi] = white_demi;
+  // GetGroundInput's thresholds are RM1.x's: the per-step counts are `black` and `white`.
+  window_black_input_demiurge += black - ground_black_input_demiurge[demi];
+  window_white_input_demiurge += white - ground_white_input_demiurge[demi];
+  ground_black_input_demiurge[demi] = black;
+  ground_white_input_demiurge[demi] = white;
+  ground_input_demiurge = window_black_input_demiurge > 10 ? 0.0 : (window_white_input_demiurge > 10 ? 1.0 : 0.5);
   ground_slot_demiurge = next_slot(ground_slot_demiurge, kDemiurgeGroundHistory);
   ground_demiurge = window_black_demiurge > 8 ? 0.0 : (window_white_demiurge > 8 ? 1.0 : 0.5);
   window_black += black - ground_black[slot];

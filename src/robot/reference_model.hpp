@@ -32,6 +32,10 @@ struct ReferenceModel {
   // last 10 steps (30 readings); black if more than 8 are below 0.02, else white if more than
   // 8 are above 0.97, else gray. The Coconut and Arlequin floor conditions read it.
   double ground_demiurge = 0.5;
+  // Demiurge's RM3.0 GetGroundInput, what Demiurge's Arlequin modules read as ground inputs:
+  // the same 10 steps, black if more than 10 of the 30 readings are below 0.03, else white if
+  // more than 10 are above 0.85, else gray.
+  double ground_input_demiurge = 0.5;
   // The two vectors keep their last value at a step that does not read them.
   Vec2 proximity;               // sum of proximity vectors, length clipped to 1 (RM1.2 Pv)
   Vec2 light;                   // unit vector to the light if any sensor reads > 0.2, else 0
@@ -54,6 +58,10 @@ struct ReferenceModel {
   /// range_cm at the bearing, and how many messages the buffer holds.
   Vec2 neighbour_position_sum() const { return buffer_sum(rab_position_steps); }
   int buffered_messages() const;
+  /// Demiurge's RM3.0 buffer emptied `steps` steps ago (Arlequin modules with Demiurge's
+  /// machinery): the sum of range_cm at the bearing over the messages of the last
+  /// min(steps, 11) steps, this one included, and in `messages` how many there are.
+  Vec2 recent_neighbour_position_sum(int steps, int& messages) const;
 
   // --- memory ---
   static constexpr int kGroundHistory = 5;
@@ -64,6 +72,8 @@ struct ReferenceModel {
   static constexpr int kDemiurgeGroundHistory = 10;
   std::array<std::uint8_t, kDemiurgeGroundHistory> ground_black_demiurge{}, ground_white_demiurge{};
   int window_black_demiurge = 0, window_white_demiurge = 0;
+  std::array<std::uint8_t, kDemiurgeGroundHistory> ground_black_input_demiurge{}, ground_white_input_demiurge{};
+  int window_black_input_demiurge = 0, window_white_input_demiurge = 0;
   int ground_slot_demiurge = 0;
   // Per step of the buffer: the sums over that step's messages, so that a buffer sum adds
   // 11 terms, not every message.

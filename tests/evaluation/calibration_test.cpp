@@ -5,6 +5,9 @@
 //                          ten Maple behaviour trees on AAC and foraging;
 //   argos-reference-3.csv  fifteen TuttiFrutti FSMs on its three missions.
 //   argos-reference-5.csv  fifteen Coconut FSMs on its three bounded missions (Demiurge's code base).
+//   argos-reference-6.csv  Arlequin FSMs and single-module controllers on AAC and aggregation-xor,
+//                          run with Demiurge's module set (its networks and machinery), as
+//                          Demiurge ran them; three strings repeated under two names count once.
 // Seeds differ between the simulators, so we compare distributions, per controller and per
 // group (a mission and an architecture):
 //   - every mean lands within one standard deviation of ARGoS';

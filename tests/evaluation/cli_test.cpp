@@ -44,6 +44,23 @@ TEST(Cli, EvaluateJsonAgreesWithText) {
   EXPECT_EQ(doc["control_software"], "--fsm-config --nstates 1 --s0 10 --rwm0 50");
 }
 
+TEST(Cli, ArlequinModulesPicksTheSetAndABadOneIsOneLine) {
+  const std::string attraction = " --seeds 1-3 --fsm-config --nstates 1 --s0 54";
+  const Result shipped = run("evaluate --mission aac" + attraction);
+  const Result named = run("evaluate --mission aac --arlequin-modules swarmdesign" + attraction);
+  const Result demiurge = run("evaluate --mission aac --arlequin-modules demiurge" + attraction);
+  const Result folder =
+      run("evaluate --mission aac --arlequin-modules " + std::string(SWARMDESIGN_SOURCE_DIR) + "/data/arlequin-demiurge" + attraction);
+  ASSERT_EQ(demiurge.status, 0) << demiurge.err;
+  EXPECT_EQ(named.out, shipped.out);
+  EXPECT_NE(demiurge.out, shipped.out);
+  EXPECT_EQ(folder.out, demiurge.out);
+  const Result bad = run("evaluate --mission aac --arlequin-modules demiurg" + attraction);
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_EQ(bad.err, "swarmdesign: error: arlequin_modules: Arlequin module set 'demiurg' is neither swarmdesign, demiurge "
+                     "nor a folder of the six weight documents\n");
+}
+
 TEST(Cli, LegacyOneDigitStringsRunAsChocolate) {
   const Result legacy = run("evaluate --mission aac --seed 2 --fsm-config --nstates 1 --s0 0 --rwm0 50");
   const Result modern = run("evaluate --mission aac --seed 2" + kRandomWalk);

@@ -118,5 +118,23 @@ TEST(NoAllocation, NoTickOfAnyMissionAllocates) {
   }
 }
 
+TEST(NoAllocation, DemiurgesArlequinMachineryDoesNotAllocate) {
+  // Set 6's A03: four states of modules 50-55, so the grey samples, the ground-input filter
+  // and the buffer emptied on entry all run.
+  const ControlSoftware software = parse_control_software(
+      "--fsm-config --nstates 4 --s0 54 --n0 4 --n0x0 2 --c0x0 53 --p0x0 2 --w0x0 4.8 --n0x1 2 --c0x1 50 --p0x1 0.11 "
+      "--n0x2 0 --c0x2 50 --p0x2 0.81 --n0x3 2 --c0x3 53 --p0x3 2 --w0x3 13.59 --s1 51 --n1 4 --n1x0 1 --c1x0 52 --p1x0 "
+      "0.98 --n1x1 1 --c1x1 53 --p1x1 1 --w1x1 19.99 --n1x2 2 --c1x2 55 --p1x2 0.08 --n1x3 1 --c1x3 50 --p1x3 0.56 --s2 52 "
+      "--n2 3 --n2x0 1 --c2x0 51 --p2x0 0.88 --n2x1 2 --c2x1 55 --p2x1 0.58 --n2x2 0 --c2x2 55 --p2x2 0.37 --s3 53 --n3 4 "
+      "--n3x0 0 --c3x0 55 --p3x0 0.87 --n3x1 1 --c3x1 54 --p3x1 1 --w3x1 16.05 --n3x2 2 --c3x2 53 --p3x2 2 --w3x2 7.96 "
+      "--n3x3 2 --c3x3 52 --p3x3 0.84");
+  const Mission mission = with_arlequin_modules(load_mission("aac"), "demiurge");
+  Simulation simulation(mission, software);
+  CountingAllocations scope;
+  simulation.reset(1);
+  while (!simulation.finished()) simulation.step();
+  EXPECT_EQ(scope.count(), 0);
+}
+
 }  // namespace
 }  // namespace sd
