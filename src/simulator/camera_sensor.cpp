@@ -39,11 +39,11 @@ void sense_camera(const ArenaModel& arena, const RobotModel& model, SwarmState& 
       if (!arena.camera_line_of_sight(camera, {led.x, led.y, epuck::kRgbLedElevation})) return;
       add(rgb, offset);
     };
-    if (!swarm.sensing.use_grid) {
+    if (!swarm.broad_phase.use_grid) {
       for (int j = 0; j < swarm.size; ++j) see_robot(j);
     } else {  // the robots whose LED can be in view, in index order as above
-      const NeighbourGrid& grid = swarm.sensing.grid;
-      std::uint16_t* candidate = swarm.sensing.candidates.data();
+      const NeighbourGrid& grid = swarm.broad_phase.grid;
+      std::uint16_t* candidate = swarm.broad_phase.candidates.data();
       std::size_t found = 0;
       grid.for_each_run_near(p, p, half_range - kRgbLedOffset, [&](int begin, int end) {
         for (int k = begin; k < end; ++k) candidate[found++] = grid.robot()[k];

@@ -61,10 +61,10 @@ void sense_light(const ArenaModel& arena, const RobotModel& model, SwarmState& s
         auto blocks_from = [&](int j) {
           return j != i && (swarm.position[j] - p).squared_length() < reach_sq && blocks(swarm.position[j]);
         };
-        if (!swarm.sensing.use_grid) {
+        if (!swarm.broad_phase.use_grid) {
           for (int j = 0; j < n && !occluded; ++j) occluded = blocks_from(j);
         } else {  // a blocking body's centre lies within r of the ray's first `reach`
-          const NeighbourGrid& grid = swarm.sensing.grid;
+          const NeighbourGrid& grid = swarm.broad_phase.grid;
           grid.for_each_run_near(p, p + dir * reach, kRadius, [&](int begin, int end) {
             for (int k = begin; k < end && !occluded; ++k) occluded = blocks_from(grid.robot()[k]);
           });

@@ -74,8 +74,8 @@ void sense_proximity(const ArenaModel& arena, const RobotModel& model, SwarmStat
       for (int k = 0; k < 8; ++k) cast(k);
     }
   };
-  for (int n = 0; n < swarm.sensing.close_pair_count; ++n) {
-    const RobotPair& pair = swarm.pairs[swarm.sensing.close_pairs[static_cast<std::size_t>(n)]];
+  for (int n = 0; n < swarm.broad_phase.close_pair_count; ++n) {
+    const RobotPair& pair = swarm.broad_phase.pairs[swarm.broad_phase.close_pairs[static_cast<std::size_t>(n)]];
     if (swarm.demand[pair.a] & SwarmState::kDemandProximity) cast_towards(pair.a, pair.delta, pair.distance_sq);
     if (swarm.demand[pair.b] & SwarmState::kDemandProximity) cast_towards(pair.b, -pair.delta, pair.distance_sq);
   }

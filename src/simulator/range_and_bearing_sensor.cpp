@@ -40,7 +40,7 @@ bool no_robot_between(const SwarmState& swarm, const RobotPair& pair) {
   // lies within r of the line. (Its distance to an end would also do, but no body comes
   // within r of another's centre, and the two ends themselves project onto the segment's
   // ends, so they are not counted.)
-  const SensorWorkspace& ws = swarm.sensing;
+  const BroadPhase& ws = swarm.broad_phase;
   const double ax = ws.position_x[pair.a], ay = ws.position_y[pair.a];
   const double abx = pair.delta.x, aby = pair.delta.y, len2 = pair.distance_sq;
   if (!ws.use_grid) return body_on_segment(ws.position_x.data(), ws.position_y.data(), 0, swarm.size, ax, ay, abx, aby, len2) == 0.0;
@@ -56,7 +56,7 @@ bool no_robot_between(const SwarmState& swarm, const RobotPair& pair) {
 
 void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng) {
   std::fill(swarm.rab_count.begin(), swarm.rab_count.end(), 0);
-  if (swarm.sensing.use_grid && swarm.sensing.pair_range < model.rab_range) update_pairs(swarm, model.rab_range);
+  if (swarm.broad_phase.use_grid && swarm.broad_phase.pair_range < model.rab_range) swarm.broad_phase.build(swarm.position, model.rab_range);
   const std::size_t stride = swarm.rab_stride();
   const double range_sq = model.rab_range * model.rab_range;
   const auto loss_threshold = static_cast<std::uint64_t>(model.rab_loss * 4294967296.0);
@@ -65,9 +65,9 @@ void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, S
   // index written, the count advanced only for the kept ones), in pair order as before.
   std::uint32_t* kept = swarm.sensing.rab_pairs.data();
   int in_range = 0;
-  for (std::size_t k = 0; k < swarm.pairs.size(); ++k) {
+  for (std::size_t k = 0; k < swarm.broad_phase.pairs.size(); ++k) {
     kept[in_range] = static_cast<std::uint32_t>(k);
-    in_range += swarm.pairs[k].distance_sq < range_sq ? 1 : 0;
+    in_range += swarm.broad_phase.pairs[k].distance_sq < range_sq ? 1 : 0;
   }
   // Loss is drawn first: line of sight is only worth computing for the 28 % of pairs where a
   // packet survives, and the outcome is the same in distribution. One 64-bit draw gives both
@@ -86,7 +86,7 @@ void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, S
   // slot and counted only if it arrived. A receiver meets each other robot once, so at most
   // size - 2 packets precede a write: the slot is always within its stride.
   for (int n = 0; n < surviving; ++n) {
-    const RobotPair& pair = swarm.pairs[kept[n]];
+    const RobotPair& pair = swarm.broad_phase.pairs[kept[n]];
     const bool visible = arena.line_of_sight_walls(swarm.position[pair.a], swarm.position[pair.b]) &&
                          no_robot_between(swarm, pair);
     const std::uint64_t arrived = visible ? received[n] : 0;

@@ -3,7 +3,7 @@
 namespace sd {
 
 void sense(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng, SensorSet sensors) {
-  update_pairs(swarm, sensors.range_and_bearing ? model.rab_range : kProximityPairRange);
+  swarm.broad_phase.build(swarm.position, sensors.range_and_bearing ? model.rab_range : kProximityPairRange);
   if (sensors.range_and_bearing) sense_range_and_bearing(arena, model, swarm, rng);
   if (sensors.proximity) sense_proximity(arena, model, swarm, rng);
   if (sensors.light) sense_light(arena, model, swarm, rng);
