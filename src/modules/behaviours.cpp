@@ -124,6 +124,9 @@ using RM = ReferenceModel;
 }  // namespace
 
 const BehaviourLaw stop{[](P, M&, const RM&, Rng&) { return Actuation{0.0, 0.0}; }, {}};
+const BehaviourLaw unknown_behaviour{[](P, M&, const RM&, Rng&) -> Actuation {
+  throw std::invalid_argument("a behaviour module the catalogue lacks was run");
+}, {}};
 
 namespace chocolate {
 const BehaviourLaw exploration{[](P p, M& m, const RM& rm, Rng& rng) { return sd::exploration(p[0], kChocolateObstacleSquaredReading, m, rm, rng); }, {"rwm"}};

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "modules/behaviours.hpp"
 #include "modules/laws.hpp"
 
 namespace sd {
@@ -144,25 +143,17 @@ std::string module_text(const ModuleSpec& m) {
   throw std::logic_error(text);
 }
 
-/// The spec of an id the catalogue lacks: its laws throw, so a bad id never stops a robot
+/// The spec of an id the catalogue lacks: its law throws, so a bad id never stops a robot
 /// silently.
-[[noreturn]] void no_such_module(ModuleKind kind) {
-  throw std::invalid_argument(kind == ModuleKind::Behaviour ? "a behaviour module the catalogue lacks was run"
-                                                            : "a condition module the catalogue lacks was checked");
-}
 const ModuleSpec& unknown_module(ModuleKind kind) {
   static const ModuleSpec behaviour = [] {
     ModuleSpec m = spec(-1, ModuleKind::Behaviour, "unknown", {}, 0);
-    m.behaviour.run = [](LawParameters, BehaviourMemory&, const ReferenceModel&, Rng&) -> Actuation {
-      no_such_module(ModuleKind::Behaviour);
-    };
+    m.behaviour = laws::unknown_behaviour;
     return m;
   }();
   static const ModuleSpec condition = [] {
     ModuleSpec m = spec(-1, ModuleKind::Condition, "unknown", {}, 0);
-    m.condition.check = [](LawParameters, const ReferenceModel&, Rng&, std::span<const double>) -> bool {
-      no_such_module(ModuleKind::Condition);
-    };
+    m.condition = laws::unknown_condition;
     return m;
   }();
   return kind == ModuleKind::Behaviour ? behaviour : condition;

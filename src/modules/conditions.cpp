@@ -1,6 +1,7 @@
 #include "modules/conditions.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "core/math.hpp"
 #include "modules/laws.hpp"
@@ -65,6 +66,10 @@ const ConditionLaw demiurge_gray{[](P p, const RM& rm, Rng& rng, Table) {
 }, kProbability};
 const ConditionLaw demiurge_white{[](P p, const RM& rm, Rng& rng, Table) { return rm.ground_demiurge >= 0.95 && rng.bernoulli(p[0]); }, kProbability};
 }  // namespace
+
+const ConditionLaw unknown_condition{[](P, const RM&, Rng&, Table) -> bool {
+  throw std::invalid_argument("a condition module the catalogue lacks was checked");
+}, {}};
 
 const FloorLaws rm1_floor{rm1_black, rm1_gray, rm1_white};
 const FloorLaws rm3_floor{rm3_black, rm3_gray, rm3_white};

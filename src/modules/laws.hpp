@@ -7,6 +7,10 @@ namespace sd::laws {
 
 /// Stop (11, 21 without its colour, 31, 41): both wheels at 0.
 extern const BehaviourLaw stop;
+/// What an id the catalogue lacks runs: a law that throws std::invalid_argument, never a
+/// silent stop.
+extern const BehaviourLaw unknown_behaviour;
+extern const ConditionLaw unknown_condition;
 
 namespace chocolate {  // 10-15, ARGoS3-AutoMoDe master
 extern const BehaviourLaw exploration, phototaxis, anti_phototaxis, attraction, repulsion;
