@@ -1,10 +1,12 @@
 #include "modules/behaviours.hpp"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "core/math.hpp"
 #include "modules/arlequin.hpp"
-#include "modules/maple_behaviours.hpp"
+#include "modules/laws.hpp"
 #include "simulator/epuck.hpp"
 
 namespace sd {
@@ -19,15 +21,14 @@ bool obstacle_in_front(const ReferenceModel& rm) { return rm.proximity.squared_l
 
 /// Coconut's exploration schemes (DEMI GetHeadingVector): stimulus S pushed away from
 /// obstacles; without a stimulus the scheme decides where to go.
-Actuation coconut(Vec2 stimulus, double k, const ModuleInstance& b, int exp_index, BehaviourMemory& m,
+Actuation coconut(Vec2 stimulus, double k, LawParameters prm, std::size_t exp_index, BehaviourMemory& m,
                   const ReferenceModel& rm, Rng& rng) {
   Vec2 r = with_fallback(stimulus - rm.proximity * k);
   if (stimulus.squared_length() >= 0.01) return wheels_towards(r);
-  const auto& prm = b.parameters;
-  const int scheme = static_cast<int>(prm[static_cast<std::size_t>(exp_index)]);
+  const int scheme = static_cast<int>(prm[exp_index]);
   if (scheme == 1) {
     // Ballistic motion with a random turn in place when an obstacle is ahead.
-    const double rwm = prm[static_cast<std::size_t>(exp_index + 1)];
+    const double rwm = prm[exp_index + 1];
     if (m.walk_steps <= 0) {
       if (obstacle_in_front(rm)) {
         m.walk_steps = static_cast<std::int32_t>(rng.uniform_int(0, static_cast<std::uint32_t>(rwm)));
@@ -42,7 +43,7 @@ Actuation coconut(Vec2 stimulus, double k, const ModuleInstance& b, int exp_inde
   } else if (scheme == 2) {
     // Random walk: power-law step lengths (exponent mu), wrapped-Cauchy turns (rho); one
     // uniform draw feeds both, as in DEMI.
-    const double mu = prm[static_cast<std::size_t>(exp_index + 2)], rho = prm[static_cast<std::size_t>(exp_index + 3)];
+    const double mu = prm[exp_index + 2], rho = prm[exp_index + 3];
     if (m.walk_steps <= 0) {
       const double u = rng.uniform();
       const double length = mu > 1.0 && u > 0.0 ? math::pow(u, 1.0 / (1.0 - mu)) : INFINITY;
@@ -103,77 +104,88 @@ Actuation exploration(double rwm, double obstacle_squared_reading, BehaviourMemo
 void reset_behaviour(BehaviourMemory& memory) { memory = BehaviourMemory{}; }
 
 void prepare_behaviour(const ModuleInstance& behaviour) {
-  if (arlequin::is_module(behaviour.id)) arlequin::shipped_weights(behaviour.id);
+  const ModuleSpec* spec = find_module(ModuleKind::Behaviour, behaviour.id);
+  if (!spec) throw std::invalid_argument("no behaviour module " + std::to_string(behaviour.id) + " in the catalogue");
+  if (spec->behaviour.prepare) spec->behaviour.prepare(behaviour.id);
 }
 
 Actuation run_behaviour(const ModuleInstance& b, BehaviourMemory& memory, const ReferenceModel& rm, Rng& rng) {
-  const auto& prm = b.parameters;
-  switch (b.id) {
-    // Chocolate (parameters: rwm | att | rep).
-    case 10:
-      return exploration(prm[0], kChocolateObstacleSquaredReading, memory, rm, rng);
-    case 11:
-      return {0.0, 0.0};
-    case 12:
-      return wheels_towards(phototaxis_vector(rm));
-    case 13:
-      return wheels_towards(anti_phototaxis_vector(rm));
-    case 14:
-      return wheels_towards(attraction_vector(rm, prm[0]));
-    case 15:
-      return wheels_towards(repulsion_vector(rm, prm[0], /*rep_squared=*/true));
-    // TuttiFrutti: the Chocolate laws plus the LED colour cle (last parameter but clr).
-    case 20:
-      return with_led(exploration(prm[0], kChocolateObstacleSquaredReading, memory, rm, rng), prm[1]);
-    case 21:
-      return with_led({0.0, 0.0}, prm[0]);
-    case 24:
-      return with_led(wheels_towards(attraction_vector(rm, prm[0])), prm[1]);
-    case 25:
-      return with_led(wheels_towards(repulsion_vector(rm, prm[0], /*rep_squared=*/true)), prm[1]);
-    case 28: {  // GoToColor: vel, cle, clr; no small-vector fallback
-      const Vec2 c = color_vector(rm, palette_color(static_cast<int>(prm[2])));
-      const double length = c.length();
-      const Vec2 heading = length > 0.0 ? c * (prm[0] / length) : Vec2{prm[0], 0.0};
-      return with_led(wheels_towards(heading - rm.proximity * 6.0), prm[1]);
-    }
-    case 29: {  // GoAwayColor
-      const Vec2 c = color_vector(rm, palette_color(static_cast<int>(prm[2])));
-      const double length = c.length();
-      const Vec2 heading = length > 0.0 ? c * (-prm[0] / length) : Vec2{prm[0], 0.0};
-      return with_led(wheels_towards(heading - rm.proximity * 5.0), prm[1]);
-    }
-    // Coconut: stimulus and avoidance gain per module, exploration scheme from exp.
-    case 30:
-      return coconut({}, 1.0, b, 0, memory, rm, rng);
-    case 31:
-      return {0.0, 0.0};
-    case 32:
-      return coconut(rm.light, 5.0, b, 0, memory, rm, rng);
-    case 33:
-      return coconut(-rm.light, 5.0, b, 0, memory, rm, rng);
-    case 34: {
-      const double alpha = std::trunc(prm[0]);
-      return coconut(rm.attraction(alpha) * alpha, 6.0, b, 1, memory, rm, rng);
-    }
-    case 35: {
-      const double alpha = std::trunc(prm[0]);
-      return coconut(rm.attraction(alpha) * -alpha, 5.0, b, 1, memory, rm, rng);
-    }
-    // Maple: the BT branch's own laws (maple_behaviours.hpp).
-    case 40: case 41: case 42: case 43: case 44: case 45:
-      return maple::run_behaviour(b, memory, rm, rng);
-    // Arlequin: the shipped network of the module (arlequin.hpp); no memory, no parameters.
-    case 50:
-    case 51:
-    case 52:
-    case 53:
-    case 54:
-    case 55:
-      return arlequin::drive(arlequin::shipped_weights(b.id), rm);
-    default:
-      return {0.0, 0.0};
-  }
+  const ModuleSpec& spec = module_to_run(ModuleKind::Behaviour, b.id);
+  return spec.behaviour.run(spec.law_parameters(b), memory, rm, rng);
 }
+
+// The laws the catalogue's entries carry (laws.hpp), each reading its parameters by name.
+namespace laws {
+
+namespace {
+using P = LawParameters;
+using M = BehaviourMemory;
+using RM = ReferenceModel;
+}  // namespace
+
+const BehaviourLaw stop{[](P, M&, const RM&, Rng&) { return Actuation{0.0, 0.0}; }, {}};
+const BehaviourLaw unknown_behaviour{[](P, M&, const RM&, Rng&) -> Actuation {
+  throw std::invalid_argument("a behaviour module the catalogue lacks was run");
+}, {}};
+
+namespace chocolate {
+const BehaviourLaw exploration{[](P p, M& m, const RM& rm, Rng& rng) { return sd::exploration(p[0], kChocolateObstacleSquaredReading, m, rm, rng); }, {"rwm"}};
+const BehaviourLaw phototaxis{[](P, M&, const RM& rm, Rng&) { return wheels_towards(phototaxis_vector(rm)); }, {}};
+const BehaviourLaw anti_phototaxis{[](P, M&, const RM& rm, Rng&) { return wheels_towards(anti_phototaxis_vector(rm)); }, {}};
+const BehaviourLaw attraction{[](P p, M&, const RM& rm, Rng&) { return wheels_towards(attraction_vector(rm, p[0])); }, {"att"}};
+const BehaviourLaw repulsion{[](P p, M&, const RM& rm, Rng&) { return wheels_towards(repulsion_vector(rm, p[0], /*rep_squared=*/true)); }, {"rep"}};
+}  // namespace chocolate
+
+namespace tuttifrutti {
+const BehaviourLaw exploration{[](P p, M& m, const RM& rm, Rng& rng) { return with_led(sd::exploration(p[0], kChocolateObstacleSquaredReading, m, rm, rng), p[1]); }, {"rwm", "cle"}};
+const BehaviourLaw stop{[](P p, M&, const RM&, Rng&) { return with_led({0.0, 0.0}, p[0]); }, {"cle"}};
+const BehaviourLaw attraction{[](P p, M&, const RM& rm, Rng&) { return with_led(wheels_towards(attraction_vector(rm, p[0])), p[1]); }, {"att", "cle"}};
+const BehaviourLaw repulsion{[](P p, M&, const RM& rm, Rng&) { return with_led(wheels_towards(repulsion_vector(rm, p[0], /*rep_squared=*/true)), p[1]); }, {"rep", "cle"}};
+// GoToColor: no small-vector fallback.
+const BehaviourLaw go_to_color{[](P p, M&, const RM& rm, Rng&) {
+  const Vec2 c = color_vector(rm, palette_color(static_cast<int>(p[2])));
+  const double length = c.length();
+  const Vec2 heading = length > 0.0 ? c * (p[0] / length) : Vec2{p[0], 0.0};
+  return with_led(wheels_towards(heading - rm.proximity * 6.0), p[1]);
+}, {"vel", "cle", "clr"}};
+const BehaviourLaw go_away_color{[](P p, M&, const RM& rm, Rng&) {
+  const Vec2 c = color_vector(rm, palette_color(static_cast<int>(p[2])));
+  const double length = c.length();
+  const Vec2 heading = length > 0.0 ? c * (-p[0] / length) : Vec2{p[0], 0.0};
+  return with_led(wheels_towards(heading - rm.proximity * 5.0), p[1]);
+}, {"vel", "cle", "clr"}};
+}  // namespace tuttifrutti
+
+// Coconut: stimulus and avoidance gain per module, exploration scheme from exp.
+namespace coconut {
+constexpr ParameterNames kScheme{"exp", "rwm", "mu", "rho"};
+const BehaviourLaw exploration{[](P p, M& m, const RM& rm, Rng& rng) { return sd::coconut({}, 1.0, p, 0, m, rm, rng); }, kScheme};
+const BehaviourLaw phototaxis{[](P p, M& m, const RM& rm, Rng& rng) { return sd::coconut(rm.light, 5.0, p, 0, m, rm, rng); }, kScheme};
+const BehaviourLaw anti_phototaxis{[](P p, M& m, const RM& rm, Rng& rng) { return sd::coconut(-rm.light, 5.0, p, 0, m, rm, rng); }, kScheme};
+const BehaviourLaw attraction{[](P p, M& m, const RM& rm, Rng& rng) {
+  const double alpha = std::trunc(p[0]);
+  return sd::coconut(rm.attraction(alpha) * alpha, 6.0, p, 1, m, rm, rng);
+}, {"att", "exp", "rwm", "mu", "rho"}};
+const BehaviourLaw repulsion{[](P p, M& m, const RM& rm, Rng& rng) {
+  const double alpha = std::trunc(p[0]);
+  return sd::coconut(rm.attraction(alpha) * -alpha, 5.0, p, 1, m, rm, rng);
+}, {"rep", "exp", "rwm", "mu", "rho"}};
+}  // namespace coconut
+
+// Arlequin: the shipped network of the module (arlequin.hpp); no memory, no parameters.
+namespace arlequin {
+namespace {
+template <int Id>
+Actuation network_of(P, M&, const RM& rm, Rng&) {
+  return sd::arlequin::drive(sd::arlequin::shipped_weights(Id), rm);
+}
+void load_network(int id) { sd::arlequin::shipped_weights(id); }
+}  // namespace
+const BehaviourLaw network[6] = {{network_of<50>, {}, load_network}, {network_of<51>, {}, load_network},
+                                 {network_of<52>, {}, load_network}, {network_of<53>, {}, load_network},
+                                 {network_of<54>, {}, load_network}, {network_of<55>, {}, load_network}};
+}  // namespace arlequin
+
+}  // namespace laws
 
 }  // namespace sd

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <cstdlib>
+#include <stdexcept>
+
+#include "modules/laws.hpp"
 
 namespace sd {
 
@@ -43,39 +45,62 @@ std::vector<ParameterSpec> plus(std::vector<ParameterSpec> a, const std::vector<
 
 constexpr std::uint8_t kProx = kProximityInput, kLight = kLightInput, kRab = kRangeAndBearingInput, kCam = kCameraInput;
 
+ModuleSpec spec(int id, ModuleKind kind, std::string name, std::vector<ParameterSpec> parameters, std::uint8_t inputs) {
+  ModuleSpec m{};
+  m.id = id;
+  m.kind = kind;
+  m.name = std::move(name);
+  m.parameters = std::move(parameters);
+  m.inputs = inputs;
+  return m;
+}
+ModuleSpec behaviour(int id, std::string name, std::vector<ParameterSpec> parameters, std::uint8_t inputs, const BehaviourLaw& law) {
+  ModuleSpec m = spec(id, ModuleKind::Behaviour, std::move(name), std::move(parameters), inputs);
+  m.behaviour = law;
+  return m;
+}
+ModuleSpec condition(int id, std::string name, std::vector<ParameterSpec> parameters, std::uint8_t inputs, const ConditionLaw& law) {
+  ModuleSpec m = spec(id, ModuleKind::Condition, std::move(name), std::move(parameters), inputs);
+  m.condition = law;
+  return m;
+}
+
 std::vector<ModuleSpec> build_behaviours() {
   std::vector<ModuleSpec> b;
-  // Chocolate (RM1.2, ARGoS3-AutoMoDe master) and Maple (the same six, with the same
-  // parameters and inputs, as behaviour-tree actions; their laws are the BT branch's:
-  // maple_behaviours.hpp).
-  for (const int base : {10, 40}) {
-    b.push_back({base + 0, ModuleKind::Behaviour, "Exploration", {rwm()}, kProx});
-    b.push_back({base + 1, ModuleKind::Behaviour, "Stop", {}, 0});
-    b.push_back({base + 2, ModuleKind::Behaviour, "Phototaxis", {}, kLight | kProx});
-    b.push_back({base + 3, ModuleKind::Behaviour, "Anti-phototaxis", {}, kLight | kProx});
-    b.push_back({base + 4, ModuleKind::Behaviour, "Attraction", {att()}, kRab | kProx});
-    b.push_back({base + 5, ModuleKind::Behaviour, "Repulsion", {rep()}, kRab | kProx});
-  }
+  // Chocolate (RM1.2, ARGoS3-AutoMoDe master).
+  b.push_back(behaviour(10, "Exploration", {rwm()}, kProx, laws::chocolate::exploration));
+  b.push_back(behaviour(11, "Stop", {}, 0, laws::stop));
+  b.push_back(behaviour(12, "Phototaxis", {}, kLight | kProx, laws::chocolate::phototaxis));
+  b.push_back(behaviour(13, "Anti-phototaxis", {}, kLight | kProx, laws::chocolate::anti_phototaxis));
+  b.push_back(behaviour(14, "Attraction", {att()}, kRab | kProx, laws::chocolate::attraction));
+  b.push_back(behaviour(15, "Repulsion", {rep()}, kRab | kProx, laws::chocolate::repulsion));
   // TuttiFrutti (RM3.0): every behaviour shows the LED colour cle.
-  b.push_back({20, ModuleKind::Behaviour, "Exploration", {rwm(), cle()}, kProx});
-  b.push_back({21, ModuleKind::Behaviour, "Stop", {cle()}, 0});
-  b.push_back({24, ModuleKind::Behaviour, "Attraction", {att(), cle()}, kRab | kProx});
-  b.push_back({25, ModuleKind::Behaviour, "Repulsion", {rep(), cle()}, kRab | kProx});
-  b.push_back({28, ModuleKind::Behaviour, "GoToColor", {vel(), cle(), clr()}, kCam | kProx});
-  b.push_back({29, ModuleKind::Behaviour, "GoAwayColor", {vel(), cle(), clr()}, kCam | kProx});
+  b.push_back(behaviour(20, "Exploration", {rwm(), cle()}, kProx, laws::tuttifrutti::exploration));
+  b.push_back(behaviour(21, "Stop", {cle()}, 0, laws::tuttifrutti::stop));
+  b.push_back(behaviour(24, "Attraction", {att(), cle()}, kRab | kProx, laws::tuttifrutti::attraction));
+  b.push_back(behaviour(25, "Repulsion", {rep(), cle()}, kRab | kProx, laws::tuttifrutti::repulsion));
+  b.push_back(behaviour(28, "GoToColor", {vel(), cle(), clr()}, kCam | kProx, laws::tuttifrutti::go_to_color));
+  b.push_back(behaviour(29, "GoAwayColor", {vel(), cle(), clr()}, kCam | kProx, laws::tuttifrutti::go_away_color));
   // Coconut (DEMI): the exploration scheme is a parameter of every moving behaviour.
-  b.push_back({30, ModuleKind::Behaviour, "Exploration", exploration_scheme(), kProx});
-  b.push_back({31, ModuleKind::Behaviour, "Stop", {}, 0});
-  b.push_back({32, ModuleKind::Behaviour, "Phototaxis", exploration_scheme(), kLight | kProx});
-  b.push_back({33, ModuleKind::Behaviour, "Anti-phototaxis", exploration_scheme(), kLight | kProx});
-  b.push_back({34, ModuleKind::Behaviour, "Attraction", plus({att()}, exploration_scheme()), kRab | kProx});
-  b.push_back({35, ModuleKind::Behaviour, "Repulsion", plus({rep()}, exploration_scheme()), kRab | kProx});
+  b.push_back(behaviour(30, "Exploration", exploration_scheme(), kProx, laws::coconut::exploration));
+  b.push_back(behaviour(31, "Stop", {}, 0, laws::stop));
+  b.push_back(behaviour(32, "Phototaxis", exploration_scheme(), kLight | kProx, laws::coconut::phototaxis));
+  b.push_back(behaviour(33, "Anti-phototaxis", exploration_scheme(), kLight | kProx, laws::coconut::anti_phototaxis));
+  b.push_back(behaviour(34, "Attraction", plus({att()}, exploration_scheme()), kRab | kProx, laws::coconut::attraction));
+  b.push_back(behaviour(35, "Repulsion", plus({rep()}, exploration_scheme()), kRab | kProx, laws::coconut::repulsion));
+  // Maple: Chocolate's six, with the same parameters and inputs, as behaviour-tree actions;
+  // their laws are the BT branch's (maple_behaviours.hpp).
+  b.push_back(behaviour(40, "Exploration", {rwm()}, kProx, laws::maple::exploration));
+  b.push_back(behaviour(41, "Stop", {}, 0, laws::stop));
+  b.push_back(behaviour(42, "Phototaxis", {}, kLight | kProx, laws::maple::phototaxis));
+  b.push_back(behaviour(43, "Anti-phototaxis", {}, kLight | kProx, laws::maple::anti_phototaxis));
+  b.push_back(behaviour(44, "Attraction", {att()}, kRab | kProx, laws::maple::attraction));
+  b.push_back(behaviour(45, "Repulsion", {rep()}, kRab | kProx, laws::maple::repulsion));
   // Arlequin: neural networks without parameters; every one reads the 25 inputs of
   // modules/arlequin.hpp.
   constexpr std::uint8_t kNetwork = kProx | kLight | kGroundInput | kRab;
   const char* arlequin[] = {"Exploration", "Stop", "Phototaxis", "Anti-phototaxis", "Attraction", "Repulsion"};
-  for (int d = 0; d < 6; ++d) b.push_back({50 + d, ModuleKind::Behaviour, arlequin[d], {}, kNetwork});
-  std::sort(b.begin(), b.end(), [](const ModuleSpec& x, const ModuleSpec& y) { return x.id < y.id; });
+  for (int d = 0; d < 6; ++d) b.push_back(behaviour(50 + d, arlequin[d], {}, kNetwork, laws::arlequin::network[d]));
   return b;
 }
 
@@ -84,32 +109,76 @@ std::vector<ModuleSpec> build_conditions() {
   const auto probability = [] { return real("p", 0, 1, "probability of firing"); };
   const auto xi = [] { return integer("p", 1, 10, "neighbour threshold xi (ARGoS3-AutoMoDe master encoding)"); };
   const auto eta = [] { return real("w", 0, 20, "steepness eta"); };
-  // The six Chocolate conditions exist in every flavour that uses them.
+  // The six Chocolate conditions exist in every flavour that uses them; the floor ones read
+  // the floor filter of the flavour's reference model (TuttiFrutti's RM3.0, branch tuttifrutti of
+  // demiurge-epuck-dao, filters the floor as RM1.2).
   for (const int base : {10, 20, 30, 40, 50}) {
-    c.push_back({base + 0, ModuleKind::Condition, "BlackFloor", {probability()}, kGroundInput});
-    c.push_back({base + 1, ModuleKind::Condition, "GrayFloor", {probability()}, kGroundInput});
-    c.push_back({base + 2, ModuleKind::Condition, "WhiteFloor", {probability()}, kGroundInput});
-    c.push_back({base + 3, ModuleKind::Condition, "NeighborsCount", {xi(), eta()}, kRab});
-    c.push_back({base + 4, ModuleKind::Condition, "InvertedNeighborsCount", {xi(), eta()}, kRab});
-    c.push_back({base + 5, ModuleKind::Condition, "FixedProbability", {probability()}, 0});
+    const laws::FloorLaws& floors = base == 30 || base == 50 ? laws::demiurge_floor : laws::rm1_floor;
+    c.push_back(condition(base + 0, "BlackFloor", {probability()}, kGroundInput, floors.black));
+    c.push_back(condition(base + 1, "GrayFloor", {probability()}, kGroundInput, floors.gray));
+    c.push_back(condition(base + 2, "WhiteFloor", {probability()}, kGroundInput, floors.white));
+    c.push_back(condition(base + 3, "NeighborsCount", {xi(), eta()}, kRab, laws::neighbours_count));
+    c.push_back(condition(base + 4, "InvertedNeighborsCount", {xi(), eta()}, kRab, laws::inverted_neighbours_count));
+    c.push_back(condition(base + 5, "FixedProbability", {probability()}, 0, laws::fixed_probability));
   }
-  c.push_back({27, ModuleKind::Condition, "ColorDetection",
-               {probability(), categorical("l", {1, 2, 3, 4, 5, 6}, "colour detected: 1 green ... 6 cyan")}, kCam});
-  std::sort(c.begin(), c.end(), [](const ModuleSpec& x, const ModuleSpec& y) { return x.id < y.id; });
+  c.push_back(condition(27, "ColorDetection",
+                        {probability(), categorical("l", {1, 2, 3, 4, 5, 6}, "colour detected: 1 green ... 6 cyan")}, kCam,
+                        laws::color_detection));
   return c;
 }
 
-std::vector<ModuleSpec> checked(std::vector<ModuleSpec> table) {
-  // ModuleInstance keeps parameters in a fixed array: no module may have more.
-  for (const ModuleSpec& m : table)
-    if (m.parameters.size() > static_cast<std::size_t>(kMaxModuleParameters)) std::abort();
-  return table;
+std::string module_text(const ModuleSpec& m) {
+  std::string text = "module ";
+  text += std::to_string(m.id);
+  text += " (";
+  text += m.name;
+  text += ")";
+  return text;
+}
+
+[[noreturn]] void refuse(const ModuleSpec& m, std::string_view why, std::string_view name = {}) {
+  std::string text = module_text(m);
+  text += ' ';
+  text += why;
+  text += name;
+  throw std::logic_error(text);
+}
+
+/// The spec of an id the catalogue lacks: its law throws, so a bad id never stops a robot
+/// silently.
+const ModuleSpec& unknown_module(ModuleKind kind) {
+  static const ModuleSpec behaviour = [] {
+    ModuleSpec m = spec(-1, ModuleKind::Behaviour, "unknown", {}, 0);
+    m.behaviour = laws::unknown_behaviour;
+    return m;
+  }();
+  static const ModuleSpec condition = [] {
+    ModuleSpec m = spec(-1, ModuleKind::Condition, "unknown", {}, 0);
+    m.condition = laws::unknown_condition;
+    return m;
+  }();
+  return kind == ModuleKind::Behaviour ? behaviour : condition;
+}
+
+struct Catalogue {
+  std::vector<ModuleSpec> behaviours, conditions;
+  std::array<const ModuleSpec*, 100> behaviour_by_id{}, condition_by_id{};  // two-digit ids
+};
+
+const Catalogue& catalogue() {
+  static const Catalogue c = [] {
+    Catalogue built{with_resolved_laws(build_behaviours()), with_resolved_laws(build_conditions()), {}, {}};
+    built.behaviour_by_id.fill(&unknown_module(ModuleKind::Behaviour));
+    built.condition_by_id.fill(&unknown_module(ModuleKind::Condition));
+    for (const ModuleSpec& m : built.behaviours) built.behaviour_by_id.at(static_cast<std::size_t>(m.id)) = &m;
+    for (const ModuleSpec& m : built.conditions) built.condition_by_id.at(static_cast<std::size_t>(m.id)) = &m;
+    return built;
+  }();
+  return c;
 }
 
 const std::vector<ModuleSpec>& table(ModuleKind kind) {
-  static const std::vector<ModuleSpec> behaviours = checked(build_behaviours());
-  static const std::vector<ModuleSpec> conditions = checked(build_conditions());
-  return kind == ModuleKind::Behaviour ? behaviours : conditions;
+  return kind == ModuleKind::Behaviour ? catalogue().behaviours : catalogue().conditions;
 }
 
 std::string number_text(double v) {
@@ -186,6 +255,47 @@ const ModuleSpec* find_module(ModuleKind kind, int id) {
   for (const ModuleSpec& m : table(kind))
     if (m.id == id) return &m;
   return nullptr;
+}
+
+const ModuleSpec& module_to_run(ModuleKind kind, int id) {
+  const Catalogue& c = catalogue();
+  const auto& by_id = kind == ModuleKind::Behaviour ? c.behaviour_by_id : c.condition_by_id;
+  return static_cast<unsigned>(id) < by_id.size() ? *by_id[static_cast<std::size_t>(id)] : unknown_module(kind);
+}
+
+std::vector<ModuleSpec> with_resolved_laws(std::vector<ModuleSpec> table) {
+  std::sort(table.begin(), table.end(), [](const ModuleSpec& x, const ModuleSpec& y) { return x.id < y.id; });
+  for (std::size_t k = 0; k < table.size(); ++k) {
+    ModuleSpec& m = table[k];
+    if (m.id < 0 || m.id > 99) refuse(m, "has no two-digit id");
+    if (k > 0 && table[k - 1].id == m.id) refuse(m, "is listed twice");
+    // ModuleInstance keeps parameters in a fixed array: no module may have more.
+    if (m.parameters.size() > static_cast<std::size_t>(kMaxModuleParameters)) refuse(m, "has too many parameters");
+    const bool behaviour = m.kind == ModuleKind::Behaviour;
+    if (behaviour ? m.behaviour.run == nullptr : m.condition.check == nullptr)
+      refuse(m, behaviour ? "has no behaviour law" : "has no condition law");
+    for (std::size_t p = 0; p < m.parameters.size(); ++p) {
+      const ParameterSpec& spec = m.parameters[p];
+      if (spec.token.empty()) refuse(m, "has an unnamed parameter");
+      if (m.parameter_index(spec.token) != static_cast<int>(p)) refuse(m, "names a parameter twice: ", spec.token);
+      const bool empty = spec.type == ParameterType::Categorical ? spec.values.empty() : !(spec.min <= spec.max);
+      if (empty) refuse(m, "has an empty domain for ", spec.token);
+      if (!spec.active_if.empty() && m.parameter_index(spec.active_if) < 0)
+        refuse(m, "has a parameter active only for values of one it lacks: ", spec.active_if);
+    }
+    const ParameterNames& reads = behaviour ? m.behaviour.reads : m.condition.reads;
+    std::size_t read = 0;
+    m.law_index.fill(0);
+    for (std::size_t r = 0; r < reads.size(); ++r) {
+      if (reads[r].empty()) continue;
+      const int index = m.parameter_index(reads[r]);
+      if (index < 0) refuse(m, "has a law that reads a parameter it lacks: ", reads[r]);
+      m.law_index[r] = static_cast<std::int8_t>(index);
+      ++read;
+    }
+    if (read != m.parameters.size()) refuse(m, "has a parameter its law does not read");
+  }
+  return table;
 }
 
 }  // namespace sd

@@ -1,7 +1,8 @@
 #pragma once
 // The catalogue of modules: every behaviour and condition of the five AutoMoDe flavours,
-// with its two-digit id (10 x flavour + module digit), name and parameters. The grammar
-// parser and printer, the design space and the web editor all read this one table.
+// with its two-digit id (10 x flavour + module digit), name, parameters and law. The grammar
+// parser and printer, the design space, the web editor and the controllers all read this one
+// table.
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -9,6 +10,8 @@
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "modules/law.hpp"
 
 namespace sd {
 
@@ -34,8 +37,6 @@ struct ParameterSpec {
   std::string domain_text() const;
 };
 
-inline constexpr int kMaxModuleParameters = 6;  // Coconut's Attraction has 5: att, exp, rwm, mu, rho
-
 /// The inputs a module reads, so that a run simulates only the sensors it needs.
 enum Input : std::uint8_t {
   kProximityInput = 1,
@@ -45,12 +46,27 @@ enum Input : std::uint8_t {
   kCameraInput = 16,
 };
 
+/// A module with its parameter values (in the order of its spec's parameters; inactive
+/// parameters hold 0).
+struct ModuleInstance {
+  int id = 0;
+  std::array<double, kMaxModuleParameters> parameters{};
+  bool operator==(const ModuleInstance&) const = default;
+};
+
 struct ModuleSpec {
   int id;                        // two-digit id
   ModuleKind kind;
   std::string name;
   std::vector<ParameterSpec> parameters;
   std::uint8_t inputs = 0;       // Input bits
+  BehaviourLaw behaviour;        // behaviours only
+  ConditionLaw condition;        // conditions only
+  /// Per name the law reads, the index of that parameter (resolved when the table is built).
+  std::array<std::int8_t, kMaxModuleParameters> law_index{};
+
+  /// The parameter values of `instance` as this module's law reads them.
+  LawParameters law_parameters(const ModuleInstance& instance) const { return {instance.parameters.data(), law_index.data()}; }
 
   Flavour flavour() const { return static_cast<Flavour>(id / 10); }
   int digit() const { return id % 10; }
@@ -63,17 +79,20 @@ struct ModuleSpec {
 /// Every module of a kind, in id order.
 std::span<const ModuleSpec> modules(ModuleKind kind);
 const ModuleSpec* find_module(ModuleKind kind, int id);
+/// The module to run at a control step: found by indexing, not searching. An id the catalogue
+/// does not have gives a spec whose law throws std::invalid_argument (never a silent stop);
+/// prepare_behaviour and the controllers refuse such ids before a run.
+const ModuleSpec& module_to_run(ModuleKind kind, int id);
+
+/// Resolves the parameter names each law reads to indices, and refuses (std::logic_error,
+/// naming the module) a table where a module has no law of its kind, a law names a parameter
+/// its module lacks, a parameter is not read by the law, or a parameter is unnamed, named
+/// twice or has an empty domain. The catalogue passes its tables through this when first used.
+std::vector<ModuleSpec> with_resolved_laws(std::vector<ModuleSpec> table);
 
 /// Colour of palette index i (TuttiFrutti, simulation palette): 0 off, 1 green, 2 blue,
 /// 3 red, 4 yellow, 5 magenta, 6 cyan; anything else is off.
 std::uint32_t palette_color(int index);
 
-/// A module with its parameter values (in the order of its spec's parameters; inactive
-/// parameters hold 0).
-struct ModuleInstance {
-  int id = 0;
-  std::array<double, kMaxModuleParameters> parameters{};
-  bool operator==(const ModuleInstance&) const = default;
-};
 
 }  // namespace sd

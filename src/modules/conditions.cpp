@@ -1,8 +1,10 @@
 #include "modules/conditions.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "core/math.hpp"
+#include "modules/laws.hpp"
 
 namespace sd {
 
@@ -13,15 +15,11 @@ double neighbours_probability(double xi, double eta, int neighbours) {
 }
 
 std::vector<double> neighbours_table(const ModuleInstance& c, int max_neighbours) {
-  switch (c.id) {
-    case 13: case 23: case 33: case 43: case 53:  // NeighborsCount
-    case 14: case 24: case 34: case 44: case 54:  // InvertedNeighborsCount
-      break;
-    default:
-      return {};
-  }
+  const ModuleSpec* spec = find_module(ModuleKind::Condition, c.id);
+  if (!spec || !spec->condition.neighbours_logistic) return {};
+  const LawParameters p = spec->law_parameters(c);
   std::vector<double> table;
-  for (int n = 0; n <= max_neighbours; ++n) table.push_back(neighbours_probability(c.parameters[0], c.parameters[1], n));
+  for (int n = 0; n <= max_neighbours; ++n) table.push_back(neighbours_probability(p[0], p[1], n));
   return table;
 }
 
@@ -29,48 +27,64 @@ namespace {
 
 // A table is sized for one swarm; a count it does not cover is computed rather than assumed
 // impossible.
-double lookup_neighbours_probability(const ModuleInstance& c, int neighbours, std::span<const double> table) {
+double lookup_neighbours_probability(LawParameters p, int neighbours, std::span<const double> table) {
   if (neighbours >= 0 && static_cast<std::size_t>(neighbours) < table.size())
     return table[static_cast<std::size_t>(neighbours)];
-  return neighbours_probability(c.parameters[0], c.parameters[1], neighbours);
+  return neighbours_probability(p[0], p[1], neighbours);
 }
 
 }  // namespace
 
 bool check_condition(const ModuleInstance& c, const ReferenceModel& rm, Rng& rng, std::span<const double> table) {
-  const auto& prm = c.parameters;
-  // Every flavour's conditions 0-5 are Chocolate's. The ids are listed rather than taken
-  // modulo 10: conditions are checked for every robot at every step.
-  switch (c.id) {
-    // TuttiFrutti's RM3.0 (demiurge-epuck-dao branch tuttifrutti) filters the floor as RM1.2.
-    case 10: case 20: case 40:  // BlackFloor
-      return rm.ground <= 0.1 && rng.bernoulli(prm[0]);
-    case 11: case 21: case 41:  // GrayFloor
-      return rm.ground > 0.1 && rm.ground < 0.95 && rng.bernoulli(prm[0]);
-    case 12: case 22: case 42:  // WhiteFloor
-      return rm.ground >= 0.95 && rng.bernoulli(prm[0]);
-    // Coconut and Arlequin run on Demiurge's RM3.0, whose floor filter keeps 10 steps.
-    case 30: case 50:
-      return rm.ground_demiurge <= 0.1 && rng.bernoulli(prm[0]);
-    case 31: case 51:
-      return rm.ground_demiurge > 0.1 && rm.ground_demiurge < 0.95 && rng.bernoulli(prm[0]);
-    case 32: case 52:
-      return rm.ground_demiurge >= 0.95 && rng.bernoulli(prm[0]);
-    case 13: case 23: case 33: case 43: case 53:  // NeighborsCount
-      return rng.bernoulli(lookup_neighbours_probability(c, rm.neighbours, table));
-    case 14: case 24: case 34: case 44: case 54:  // InvertedNeighborsCount
-      return rng.bernoulli(1.0 - lookup_neighbours_probability(c, rm.neighbours, table));
-    case 15: case 25: case 35: case 45: case 55:  // FixedProbability
-      return rng.bernoulli(prm[0]);
-    case 27: {  // ColorDetection (TuttiFrutti): a blob of colour l at 6 cm or more
-      const std::uint32_t rgb = palette_color(static_cast<int>(prm[1]));
-      for (const CameraBlob& blob : rm.blobs)
-        if (blob.rgb == rgb && blob.distance_cm >= 6.0) return rng.bernoulli(prm[0]);
-      return false;
-    }
-    default:
-      return false;
-  }
+  const ModuleSpec& spec = module_to_run(ModuleKind::Condition, c.id);
+  return spec.condition.check(spec.law_parameters(c), rm, rng, table);
 }
+
+// The laws the catalogue's entries carry (laws.hpp). A floor condition's Bernoulli draw
+// happens only on its floor, as in AutoMoDe.
+namespace laws {
+
+namespace {
+using P = LawParameters;
+using RM = ReferenceModel;
+using Table = std::span<const double>;
+constexpr ParameterNames kProbability{"p"};
+}  // namespace
+
+namespace {
+const ConditionLaw rm1_black{[](P p, const RM& rm, Rng& rng, Table) { return rm.ground <= 0.1 && rng.bernoulli(p[0]); }, kProbability};
+const ConditionLaw rm1_gray{[](P p, const RM& rm, Rng& rng, Table) { return rm.ground > 0.1 && rm.ground < 0.95 && rng.bernoulli(p[0]); }, kProbability};
+const ConditionLaw rm1_white{[](P p, const RM& rm, Rng& rng, Table) { return rm.ground >= 0.95 && rng.bernoulli(p[0]); }, kProbability};
+// Coconut and Arlequin run on Demiurge's RM3.0, whose floor filter keeps 10 steps.
+const ConditionLaw demiurge_black{[](P p, const RM& rm, Rng& rng, Table) { return rm.ground_demiurge <= 0.1 && rng.bernoulli(p[0]); }, kProbability};
+const ConditionLaw demiurge_gray{[](P p, const RM& rm, Rng& rng, Table) {
+  return rm.ground_demiurge > 0.1 && rm.ground_demiurge < 0.95 && rng.bernoulli(p[0]);
+}, kProbability};
+const ConditionLaw demiurge_white{[](P p, const RM& rm, Rng& rng, Table) { return rm.ground_demiurge >= 0.95 && rng.bernoulli(p[0]); }, kProbability};
+}  // namespace
+
+const ConditionLaw unknown_condition{[](P, const RM&, Rng&, Table) -> bool {
+  throw std::invalid_argument("a condition module the catalogue lacks was checked");
+}, {}};
+
+const FloorLaws rm1_floor{rm1_black, rm1_gray, rm1_white};
+const FloorLaws demiurge_floor{demiurge_black, demiurge_gray, demiurge_white};
+
+const ConditionLaw neighbours_count{[](P p, const RM& rm, Rng& rng, Table table) {
+  return rng.bernoulli(lookup_neighbours_probability(p, rm.neighbours, table));
+}, {"p", "w"}, /*neighbours_logistic=*/true};
+const ConditionLaw inverted_neighbours_count{[](P p, const RM& rm, Rng& rng, Table table) {
+  return rng.bernoulli(1.0 - lookup_neighbours_probability(p, rm.neighbours, table));
+}, {"p", "w"}, /*neighbours_logistic=*/true};
+const ConditionLaw fixed_probability{[](P p, const RM&, Rng& rng, Table) { return rng.bernoulli(p[0]); }, kProbability};
+// ColorDetection (TuttiFrutti): a blob of colour l at 6 cm or more.
+const ConditionLaw color_detection{[](P p, const RM& rm, Rng& rng, Table) {
+  const std::uint32_t rgb = palette_color(static_cast<int>(p[1]));
+  for (const CameraBlob& blob : rm.blobs)
+    if (blob.rgb == rgb && blob.distance_cm >= 6.0) return rng.bernoulli(p[0]);
+  return false;
+}, {"p", "l"}};
+
+}  // namespace laws
 
 }  // namespace sd

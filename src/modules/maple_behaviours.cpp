@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "modules/laws.hpp"
 #include "simulator/epuck.hpp"
 
 namespace sd::maple {
@@ -23,26 +24,28 @@ Actuation bounded_wheels_towards(Vec2 v) {
   return {kMax, kMax * c};
 }
 
-Actuation run_behaviour(const ModuleInstance& b, BehaviourMemory& memory, const ReferenceModel& rm, Rng& rng) {
-  const auto& prm = b.parameters;
-  switch (b.id) {
-    case 40:
-      // The BT branch's obstacle test (the base class's ObstacleInFront) needs a reading of 0.5.
-      return sd::exploration(prm[0], kObstacleThreshold * kObstacleThreshold, memory, rm, rng);
-    case 41:
-      return {0.0, 0.0};
-    case 42:
-      return bounded_wheels_towards(phototaxis_vector(rm));
-    case 43:
-      return bounded_wheels_towards(anti_phototaxis_vector(rm));
-    case 44:
-      return bounded_wheels_towards(attraction_vector(rm, prm[0]));
-    case 45:
-      // The BT branch's Repulsion applies rep once, inside A(rep): -A(rep) - 5 P.
-      return bounded_wheels_towards(repulsion_vector(rm, prm[0], /*rep_squared=*/false));
-    default:
-      return {0.0, 0.0};
-  }
-}
-
 }  // namespace sd::maple
+
+// The laws of ids 40-45 (laws.hpp); Stop is the shared one.
+namespace sd::laws::maple {
+
+namespace {
+using P = LawParameters;
+using M = BehaviourMemory;
+using RM = ReferenceModel;
+using sd::maple::bounded_wheels_towards;
+}  // namespace
+
+// The BT branch's obstacle test (the base class's ObstacleInFront) needs a reading of 0.5.
+const BehaviourLaw exploration{[](P p, M& m, const RM& rm, Rng& rng) {
+  return sd::exploration(p[0], sd::maple::kObstacleThreshold * sd::maple::kObstacleThreshold, m, rm, rng);
+}, {"rwm"}};
+const BehaviourLaw phototaxis{[](P, M&, const RM& rm, Rng&) { return bounded_wheels_towards(phototaxis_vector(rm)); }, {}};
+const BehaviourLaw anti_phototaxis{[](P, M&, const RM& rm, Rng&) { return bounded_wheels_towards(anti_phototaxis_vector(rm)); }, {}};
+const BehaviourLaw attraction{[](P p, M&, const RM& rm, Rng&) { return bounded_wheels_towards(attraction_vector(rm, p[0])); }, {"att"}};
+// The BT branch's Repulsion applies rep once, inside A(rep): -A(rep) - 5 P.
+const BehaviourLaw repulsion{[](P p, M&, const RM& rm, Rng&) {
+  return bounded_wheels_towards(repulsion_vector(rm, p[0], /*rep_squared=*/false));
+}, {"rep"}};
+
+}  // namespace sd::laws::maple

@@ -21,7 +21,6 @@ inline constexpr double kInnerWheelFloor = -0.5;
 /// The zero vector stops the robot.
 Actuation bounded_wheels_towards(Vec2 v);
 
-/// One control step of a Maple action (ids 40-45); any other id stops the robot.
-Actuation run_behaviour(const ModuleInstance& behaviour, BehaviourMemory& memory, const ReferenceModel& rm, Rng& rng);
+// The laws of ids 40-45 are laws::maple (laws.hpp), defined in maple_behaviours.cpp.
 
 }  // namespace sd::maple

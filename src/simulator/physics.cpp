@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "simulator/epuck.hpp"
-#include "simulator/sensors.hpp"
+#include "simulator/broad_phase.hpp"
 
 namespace sd {
 
@@ -55,12 +55,12 @@ void Physics::step(const ArenaModel& arena, SwarmState& swarm) {
   pair_candidates_.clear();
   const double pair_limit = 2.0 * kRadius + 2.0 * reach;
   const double pair_limit_sq = pair_limit * pair_limit;
-  const SensorWorkspace& sensed = swarm.sensing;
-  if (pair_limit_sq <= kProximityPairRange * kProximityPairRange && sensed.describes(swarm.position)) {
-    // The sensors' close pairs of the last tick, still exact, hold every candidate, in pair
-    // order, with the same squared distances: a few pairs to test instead of all of them.
-    for (int k = 0; k < sensed.close_pair_count; ++k) {
-      const RobotPair& pair = swarm.pairs[sensed.close_pairs[static_cast<std::size_t>(k)]];
+  const BroadPhase& broad = swarm.broad_phase;
+  if (pair_limit_sq <= kProximityPairRange * kProximityPairRange && broad.built_from(swarm.position)) {
+    // The broad phase's close pairs of the last tick, still exact, hold every candidate, in
+    // pair order, with the same squared distances: a few pairs to test instead of all of them.
+    for (int k = 0; k < broad.close_pair_count; ++k) {
+      const RobotPair& pair = broad.pairs[broad.close_pairs[static_cast<std::size_t>(k)]];
       if (pair.distance_sq < pair_limit_sq) pair_candidates_.push_back({pair.a, pair.b});
     }
   } else {  // every pair, in the order of the pair table (the first tick of a run)

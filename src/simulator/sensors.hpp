@@ -4,6 +4,7 @@
 // Reads poses, writes the sensor arrays of SwarmState; draws noise from the run's Rng.
 #include "core/rng.hpp"
 #include "simulator/arena.hpp"
+#include "simulator/broad_phase.hpp"
 #include "simulator/epuck.hpp"
 #include "simulator/robot_model.hpp"
 #include "simulator/swarm.hpp"
@@ -16,13 +17,6 @@ struct SensorSet {
   bool proximity = true, light = true, ground = true, range_and_bearing = true, camera = false;
 };
 
-/// Centre distance below which a proximity ray of one robot can meet the other's body.
-inline constexpr double kProximityPairRange = epuck::kProximityRingRadius + epuck::kProximityRange + epuck::kBodyRadius;
-/// Refreshes the pair table (every pair within `range` at least, and kProximityPairRange),
-/// and the close pairs and position arrays of swarm.sensing (call after physics, before
-/// sensing).
-void update_pairs(SwarmState& swarm, double range = kProximityPairRange);
-
 void sense_proximity(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng);
 void sense_light(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng);
 void sense_ground(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng);
@@ -34,7 +28,9 @@ void sense_camera(const ArenaModel& arena, const RobotModel& model, SwarmState& 
 /// Where a robot's lit RGB LED is: index 2, at the rear, 1 mm outside the body.
 inline constexpr double kRgbLedOffset = -0.036;
 
-/// All of the above, in a fixed order (the order of random draws is part of determinism).
+/// All of the above, in a fixed order (the order of random draws is part of determinism),
+/// after building the tick's broad phase (swarm.broad_phase) from the poses. Each sensor
+/// alone reads the broad phase as the last build left it.
 void sense(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng, SensorSet sensors = {});
 
 /// Entry distance along a ray (origin, unit direction) into a disc, or a negative value if

@@ -1,18 +1,9 @@
 #include "simulator/swarm.hpp"
 
-#include <algorithm>
-#include <limits>
-
 namespace sd {
 
 void SensorWorkspace::resize(std::size_t n) {
   const std::size_t slots = pair_count(n) + 1;  // one spare slot for the branch-free appends
-  grid.reserve(n);
-  candidates.assign(n, 0);
-  close_pairs.assign(slots, 0);
-  close_pair_count = 0;
-  position_x.assign(n, 0.0);
-  position_y.assign(n, 0.0);
   rab_pairs.assign(slots, 0);
   rab_receivers.assign(slots, 0);
 }
@@ -39,22 +30,10 @@ void SwarmState::resize(int robots, int arena_leds) {
   blobs_per_robot = static_cast<int>(rab_stride()) + arena_leds;
   blobs.assign(n * static_cast<std::size_t>(blobs_per_robot), {});
   sensing.resize(n);
-  pairs.reserve(pair_count(n));
+  broad_phase.resize(n);
   use_neighbour_grid(robots >= kNeighbourGridFromRobots);
 }
 
-void SwarmState::use_neighbour_grid(bool on) {
-  sensing.use_grid = on;
-  sensing.pair_range = 0.0;
-  sensing.close_pair_count = 0;
-  // The close pairs no longer describe any positions (see SensorWorkspace::describes).
-  std::fill(sensing.position_x.begin(), sensing.position_x.end(), std::numeric_limits<double>::quiet_NaN());
-  pairs.clear();
-  if (on) return;  // listed by update_pairs
-  const auto n = static_cast<std::size_t>(size);
-  for (std::size_t a = 0; a < n; ++a)
-    for (std::size_t b = a + 1; b < n; ++b)
-      pairs.push_back({static_cast<std::uint16_t>(a), static_cast<std::uint16_t>(b), {}, 0.0});
-}
+void SwarmState::use_neighbour_grid(bool on) { broad_phase.use_neighbour_grid(on, static_cast<std::size_t>(size)); }
 
 }  // namespace sd

@@ -22,7 +22,7 @@ double total_light(const ArenaModel& arena, Vec2 p, double yaw) {
   s.yaw[0] = yaw;
   s.heading[0] = {std::cos(yaw), std::sin(yaw)};
   Rng rng(1);
-  update_pairs(s);
+  s.broad_phase.build(s.position);
   sense_light(arena, model, s, rng);
   double sum = 0.0;
   for (const double v : s.light[0]) sum += v;

@@ -38,7 +38,7 @@ TEST(TuttiScenario, ForagingDividerSplitsTheSourcesAndHidesWhatIsBehindIt) {
     for (std::size_t i = 0; i < 2; ++i) s.heading[i] = Vec2::polar(1.0, s.yaw[i]);
     s.led = {0x00ffff, 0x00ffff};
     s.demand = {SwarmState::kDemandCamera, SwarmState::kDemandCamera};
-    update_pairs(s);
+    s.broad_phase.build(s.position);
     sense_camera(m.arena, m.robot, s);
     EXPECT_EQ(s.blob_count[0], hidden ? 0 : 1) << x;
     EXPECT_EQ(s.blob_count[1], hidden ? 0 : 1) << x;

@@ -191,14 +191,14 @@ TEST(LateWalls, RaysStartingInsideAWallDoNotSeeIt) {
   Rng rng(1);
   SwarmState s = one_robot({0.0, -0.1011}, 0.27);
   s.demand[0] = SwarmState::kDemandProximity | SwarmState::kDemandLight;
-  update_pairs(s);
+  s.broad_phase.build(s.position);
   sense_proximity(arena, model, s, rng);
   for (double v : s.proximity[0]) EXPECT_EQ(v, 0.0);
   // Near the east end, the front rays leave the back wall and meet the side wall.
   s.position[0] = {0.22, -0.1011};
   s.yaw[0] = 0.0;
   s.heading[0] = {1.0, 0.0};
-  update_pairs(s);
+  s.broad_phase.build(s.position);
   sense_proximity(arena, model, s, rng);
   EXPECT_GT(s.proximity[0][0], 0.0);
   // Inside the back wall the light is not shaded by it (it is by the same wall from behind).

@@ -93,10 +93,10 @@ struct Listed {
 
 Listed listed(const SwarmState& s, double range) {
   Listed out;
-  for (const RobotPair& p : s.pairs)
+  for (const RobotPair& p : s.broad_phase.pairs)
     if (p.distance_sq < range * range) out.pairs.push_back(p);
-  for (int k = 0; k < s.sensing.close_pair_count; ++k) {
-    const RobotPair& p = s.pairs[s.sensing.close_pairs[static_cast<std::size_t>(k)]];
+  for (int k = 0; k < s.broad_phase.close_pair_count; ++k) {
+    const RobotPair& p = s.broad_phase.pairs[s.broad_phase.close_pairs[static_cast<std::size_t>(k)]];
     out.close.emplace_back(p.a, p.b);
   }
   return out;
@@ -112,10 +112,10 @@ TEST(NeighbourGrid, ListsThePairsWithinRangeAsTheFullTableDoesInItsOrder) {
     }
     full.use_neighbour_grid(false);
     grid.use_neighbour_grid(true);
-    update_pairs(full, 0.8);
-    update_pairs(grid, 0.8);
+    full.broad_phase.build(full.position, 0.8);
+    grid.broad_phase.build(grid.position, 0.8);
     const Listed a = listed(full, 0.8), b = listed(grid, 0.8);
-    EXPECT_EQ(b.pairs.size(), grid.pairs.size()) << "the grid lists only pairs within range";
+    EXPECT_EQ(b.pairs.size(), grid.broad_phase.pairs.size()) << "the grid lists only pairs within range";
     ASSERT_EQ(a.pairs.size(), b.pairs.size()) << robots << " robots";
     for (std::size_t k = 0; k < a.pairs.size(); ++k) {
       EXPECT_EQ(a.pairs[k].a, b.pairs[k].a);
@@ -138,9 +138,9 @@ TEST(NeighbourGrid, ClosePairsOfASwarmOfMoreThan362RobotsAreTheRightOnes) {
   s.use_neighbour_grid(false);
   for (int i = 0; i < 400; ++i) s.position[i] = {0.5 * (i % 20), 0.5 * (i / 20)};
   s.position[399] = s.position[398] + Vec2{0.07, 0.0};
-  update_pairs(s);
-  ASSERT_EQ(s.sensing.close_pair_count, 1);
-  const RobotPair& p = s.pairs[s.sensing.close_pairs[0]];
+  s.broad_phase.build(s.position);
+  ASSERT_EQ(s.broad_phase.close_pair_count, 1);
+  const RobotPair& p = s.broad_phase.pairs[s.broad_phase.close_pairs[0]];
   EXPECT_EQ(p.a, 398);
   EXPECT_EQ(p.b, 399);
 }

@@ -18,7 +18,7 @@ inline SwarmState robots(std::initializer_list<std::pair<Vec2, double>> poses, i
     s.heading[i] = Vec2::polar(1.0, yaw);
     ++i;
   }
-  update_pairs(s);
+  s.broad_phase.build(s.position);
   return s;
 }
 

@@ -1,0 +1,20 @@
+#pragma once
+// The e-puck's uniform sensor noise, shared by the proximity, light and ground sensors.
+#include <array>
+#include <cstddef>
+
+#include "core/math.hpp"
+#include "core/rng.hpp"
+
+namespace sd {
+
+/// Adds uniform noise in [-level, level) to each reading and clamps it to [0, 1] (the
+/// e-puck's proximity, light and ground sensors), drawn as one batch.
+template <std::size_t N>
+void add_uniform_noise(std::array<double, N>& readings, double level, Rng& rng) {
+  std::array<double, N> noise;
+  rng.coarse_uniforms(-level, level, noise.data(), static_cast<int>(N));
+  for (std::size_t k = 0; k < N; ++k) readings[k] = clamp01(readings[k] + noise[k]);
+}
+
+}  // namespace sd
