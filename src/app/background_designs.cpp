@@ -29,7 +29,7 @@ storage::Design BackgroundDesigns::start(const storage::User& user, const std::s
   std::lock_guard lock(mutex_);
   reap();
   request.project = project;
-  request.owner = storage::local_owner(0, job_ + "-" + std::to_string(next_job_++)).text();
+  request.owner = storage::owner_text(storage::server_thread(job_ + "-" + std::to_string(next_job_++)));
   Home home(home_);
   request.files = FileScope::own_projects(home, user);  // a server's user names only their own files
   // Refuses a project whose design still runs (here or in another process) before any change.

@@ -24,7 +24,7 @@ namespace {
 using nlohmann::json;
 
 std::string slurm_owner(const std::string& job_id, const storage::Project& project) {
-  return std::string(storage::kSlurmOwnerPrefix) + job_id + "@" + project.cluster->host;
+  return storage::owner_text(storage::SlurmJob{job_id, project.cluster->host});
 }
 
 /// The job: the design started in design/ or, when design/ already holds one (a job submitted
@@ -166,7 +166,7 @@ ClusterSubmission submit_cluster_design(Home& home, const storage::User& user, c
     // Submitted again: the job resumes the design from the checkpoint in its folder.
     const ClusterJobRequest settings = merged(previous->settings, given);
     check_request(settings);
-    out.design = designs.resume(latest->id, std::string(storage::kSlurmOwnerPrefix) + "submitting");
+    out.design = designs.resume(latest->id, storage::owner_text(storage::slurm_submitting()));
     out.resubmitted = !previous->job_id.empty();
     submitting([&] {
       // A first submission that never reached Slurm (an unreachable host, say) is made anew.
@@ -184,7 +184,7 @@ ClusterSubmission submit_cluster_design(Home& home, const storage::User& user, c
     const PreparedDesign checked = check_new_design({*project.mission, *project.budget, request.space, seed});
     if (latest && latest->state == storage::DesignState::interrupted && request.fresh) designs.abandon(latest->id);
     out.design = designs.start({checked.choice.architectures_text(), checked.choice.flavours_text(), seed,
-                                std::string(storage::kSlurmOwnerPrefix) + "submitting"});
+                                storage::owner_text(storage::slurm_submitting())});
     submitting([&] {
       // Recorded before the cluster is asked anything, so that a failure has a row to note it
       // in and run-design can submit this design again.
@@ -267,10 +267,11 @@ StoppedDesign stop_design(Home& home, const storage::User& user, const std::opti
                   "resumes from its last checkpoint");
     out.how = "cancelled Slurm job " + job->job_id;
   } else {
-    const auto owner = storage::Owner::parse(latest->owner);
-    if (!owner || owner->job != "cli")
+    const auto parsed = storage::parse_owner(latest->owner);
+    const auto* owner = parsed ? std::get_if<storage::LocalProcess>(&*parsed) : nullptr;
+    if (!owner)
       throw Conflict("design " + std::to_string(latest->id) + " runs in a web server (run-exp); stop it from the web app");
-    if (storage::local_owner(owner->pid, owner->job).text() != latest->owner)
+    if (!storage::runs_here(*owner))
       throw Conflict("design " + std::to_string(latest->id) + " runs on another machine (" + latest->owner + ")");
     ::kill(static_cast<pid_t>(owner->pid), SIGTERM);
     // Its lease dies with the process: wait for that, so that status right after agrees.

@@ -40,7 +40,7 @@ struct RunDesignOptions {
 };
 
 /// This process's lease owner for a design it runs.
-std::string this_process() { return storage::local_owner(0, "cli").text(); }
+std::string this_process() { return storage::owner_text(storage::local_process()); }
 
 app::ProjectDesign start(app::Home& home, const RunDesignOptions& o) {
   app::ProjectDesignRequest request;
@@ -99,7 +99,7 @@ void detach(app::ProjectDesign& d, unsigned threads) {
     run_and_report(d, threads, ProgressLine::Mode::Log);
     return;
   }
-  app::hand_over(d, storage::local_owner(child, "cli").text());
+  app::hand_over(d, storage::owner_text(storage::local_process(child)));
   std::cout << "Design " << d.design.id << " runs in the background (process " << child << ").\n"
             << "  watch it:  swarmdesign status\n"
             << "  its log:   " << log.string() << "\n";

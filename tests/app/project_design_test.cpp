@@ -56,7 +56,7 @@ class ProjectDesign : public ::testing::Test {
     r.space.fsm = true;
     r.space.flavours = {Flavour::Chocolate};
     r.seed = seed;
-    r.owner = storage::local_owner(0, "test").text();
+    r.owner = storage::owner_text(storage::server_thread("test"));
     return r;
   }
 

@@ -174,7 +174,7 @@ TEST_F(WebServer, AnExperimentsReportIsServedToItsOwnerOnlyAsOneSelfContainedPag
                           {{"alone", "automode", {"fsm"}, {"chocolate"}}}}};
     app::Home home(root_ / "home");
     const storage::User alice = app::sign_in_here(home, "alice", "alice-password").user;
-    app::StartedExperiment e = app::start_experiment(home, alice, app::plan_experiment(protocol), {"mine", storage::local_owner(0, "test").text()});
+    app::StartedExperiment e = app::start_experiment(home, alice, app::plan_experiment(protocol), {"mine", storage::owner_text(storage::server_thread("test"))});
     app::run_experiment(e, {.threads = 2, .evaluator = nullptr, .observer = nullptr, .cancel = nullptr});
   }
   const Answer list = alice_->get("/api/projects/mine/experiments");
