@@ -1,6 +1,7 @@
 #include "app/project_design.hpp"
 
 #include "app/cluster_designs.hpp"
+#include "app/design_backend.hpp"
 #include "app/documents.hpp"
 #include "app/errors.hpp"
 #include "app/inputs.hpp"
@@ -103,7 +104,7 @@ DesignStatus design_status(Home& home, const storage::User& user, bool complete,
   if (!status.design) return status;
   std::optional<storage::DesignProgress> on_cluster;
   if (status.project.cluster) {
-    on_cluster = refresh_cluster_design(home, status.project, *status.design);
+    on_cluster = backend_for(status.project).refresh(home, status.project, *status.design);
     status.cluster_job = storage::ClusterJobs(home.workspace(), status.project).find(status.design->id);
   }
   const storage::Design& d = *status.design;

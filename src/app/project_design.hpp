@@ -54,8 +54,8 @@ DesignOutcome run_project_design(ProjectDesign& design, const DesignRunOptions& 
 void hand_over(ProjectDesign& design, const std::string& new_owner);
 
 /// A project's current or last design with what its design.db says: the named project, or the
-/// active one. A cluster project's running design is first brought up to date with Slurm
-/// (app/cluster_designs.hpp), and its progress read on the cluster.
+/// active one. A running design is first brought up to date by its backend (design_backend.hpp:
+/// a cluster project's with Slurm, its progress read on the cluster).
 struct DesignStatus {
   storage::Project project;
   std::optional<storage::Design> design;

@@ -1,0 +1,48 @@
+#include "app/design_backend.hpp"
+
+#include "app/cluster_designs.hpp"
+#include "app/errors.hpp"
+#include "app/local_processes.hpp"
+#include "app/projects.hpp"
+#include "storage/lease.hpp"
+
+namespace sd::app {
+
+namespace {
+
+LocalProcesses local_processes;
+SlurmJobs slurm_jobs;
+
+/// Who can stop a running design: the backend of its owner, whichever started it.
+DesignBackend& stopper_of(const storage::Design& design, DesignBackend* server) {
+  const auto owner = storage::parse_owner(design.owner);
+  if (owner && std::holds_alternative<storage::SlurmJob>(*owner)) return slurm_jobs;
+  if (owner && std::holds_alternative<storage::ServerThread>(*owner) && server) return *server;
+  return local_processes;  // a CLI process; it refuses what it cannot reach
+}
+
+}  // namespace
+
+DesignBackend& backend_for(const storage::Project& project, DesignBackend* server) {
+  if (project.cluster) return slurm_jobs;
+  return server ? *server : local_processes;
+}
+
+StartedDesign start_design(Home& home, const storage::User& user, const DesignLaunch& launch, DesignBackend* server) {
+  return backend_for(project_or_active(home, user, launch.design.project), server).start(home, user, launch);
+}
+
+StoppedDesign stop_design(Home& home, const storage::User& user, const std::optional<std::string>& name,
+                          DesignBackend* server) {
+  const storage::Project project = project_or_active(home, user, name);
+  storage::Designs designs(home.workspace(), project);
+  auto latest = designs.latest();
+  if (latest) backend_for(project, server).refresh(home, project, *latest);
+  if (!latest || latest->state != storage::DesignState::running)
+    throw Conflict("no design of " + project.name + " is running");
+  StoppedDesign out = stopper_of(*latest, server).stop(home, project, *latest);
+  out.design = *designs.latest();  // a local design whose process is gone is found interrupted here
+  return out;
+}
+
+}  // namespace sd::app
