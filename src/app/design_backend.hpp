@@ -2,14 +2,15 @@
 // Where a project's design runs, behind one interface: a local process (a CLI in the
 // foreground, or its detached child), a thread of a long-lived server (the web app's Start),
 // or a Slurm job (a cluster project). Each backend starts, stops and follows its designs;
-// front ends ask `start_design`, `stop_design` and `design_status` (project_design.hpp) and
-// never decide where a design runs nor read who owns it: that is chosen here, once, from the
-// project (where new designs go) and from the design's typed owner (who can stop it).
+// front ends ask `start_design`, `stop_design` (design_backends.hpp) and `design_status`
+// (project_design.hpp) and never decide where a design runs nor read who owns it: that is
+// chosen once, in design_backends.cpp, from the project (where new designs go) and from the
+// design's typed owner (who can stop it).
 //
 // The backends: LocalProcesses (local_processes.hpp), BackgroundDesigns (background_designs.hpp,
 // a server's threads), SlurmJobs (cluster_designs.hpp). To add one: a class implementing
 // DesignBackend in a file of its own, an owner type for the rows it leases (storage/lease.hpp,
-// with its text), and a line in `backend_for` and `stopper_of` (design_backend.cpp).
+// with its text), and a line in `backend_for` and `stopper_of` (design_backends.cpp).
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -66,20 +67,5 @@ class DesignBackend {
   virtual std::optional<storage::DesignProgress> refresh(Home& home, const storage::Project& project,
                                                          storage::Design& design) = 0;
 };
-
-/// Where the project's new designs run: Slurm for a cluster project; else the server's
-/// threads when a server asks (`server`), this process otherwise. The one such choice.
-DesignBackend& backend_for(const storage::Project& project, DesignBackend* server = nullptr);
-
-/// Starts (or resumes) the active (or launch.design.project's) project's design on its backend.
-StartedDesign start_design(Home& home, const storage::User& user, const DesignLaunch& launch,
-                           DesignBackend* server = nullptr);
-
-/// Stops the active (or named) project's running design through the backend of its owner:
-/// scancel for a Slurm job, SIGTERM to a local process, the cancel token of a server's own
-/// thread. Conflict when no design runs, or its owner is out of reach (another server's thread,
-/// another machine). Reaching a design means owning its project: the user's projects only.
-StoppedDesign stop_design(Home& home, const storage::User& user, const std::optional<std::string>& project = std::nullopt,
-                          DesignBackend* server = nullptr);
 
 }  // namespace sd::app

@@ -1,4 +1,4 @@
-// A project's running design stopped (`stop-design`, through its backend: app/design_backend.hpp),
+// A project's running design stopped (`stop-design`, through its backend: app/design_backends.hpp),
 // and what a cluster project's cluster lacks (`cluster-check`, app/cluster_designs.hpp).
 #include <CLI/CLI.hpp>
 
@@ -7,7 +7,7 @@
 
 #include "app/accounts.hpp"
 #include "app/cluster_designs.hpp"
-#include "app/design_backend.hpp"
+#include "app/design_backends.hpp"
 #include "cli/command_registry.hpp"
 
 namespace sd::cli {

@@ -1,5 +1,5 @@
 // Designing in the active project: run-design (foreground or --detach, resuming an interrupted
-// design) and test-design. Where a design runs is the application layer's (app/design_backend.hpp:
+// design) and test-design. Where a design runs is the application layer's (app/design_backends.hpp:
 // this process, its detached child, or a Slurm job for a cluster project); this file parses and prints.
 #include <CLI/CLI.hpp>
 
@@ -8,7 +8,7 @@
 #include <optional>
 
 #include "app/accounts.hpp"
-#include "app/design_backend.hpp"
+#include "app/design_backends.hpp"
 #include "app/documents.hpp"
 #include "app/evaluation_job.hpp"
 #include "app/inputs.hpp"

@@ -1,6 +1,6 @@
 // The design monitor: a user's projects, their designs (started and stopped through their
-// backend, app/design_backend.hpp, whoever runs them), and control software saved in a project.
-#include "app/design_backend.hpp"
+// backend, app/design_backends.hpp, whoever runs them), and control software saved in a project.
+#include "app/design_backends.hpp"
 #include "app/documents.hpp"
 #include "app/errors.hpp"
 #include "app/experiment_job.hpp"

@@ -10,6 +10,7 @@
 #include "app/accounts.hpp"
 #include "app/documents.hpp"
 #include "app/errors.hpp"
+#include "app/design_backends.hpp"
 #include "app/project_design.hpp"
 #include "app/projects.hpp"
 #include "core/executor.hpp"
