@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "app/errors.hpp"
 #include "storage/lease.hpp"
 
 namespace sd::app {
@@ -24,19 +25,17 @@ void BackgroundDesigns::reap() {
   }
 }
 
-storage::Design BackgroundDesigns::start(const storage::User& user, const std::string& project,
-                                  ProjectDesignRequest request) {
+StartedDesign BackgroundDesigns::start(Home& home, const storage::User& user, const DesignLaunch& launch) {
   std::lock_guard lock(mutex_);
   reap();
-  request.project = project;
-  request.owner = storage::local_owner(0, job_ + "-" + std::to_string(next_job_++)).text();
-  Home home(home_);
+  ProjectDesignRequest request = launch.design;
+  request.owner = storage::owner_text(storage::server_thread(job_ + "-" + std::to_string(next_job_++)));
   request.files = FileScope::own_projects(home, user);  // a server's user names only their own files
   // Refuses a project whose design still runs (here or in another process) before any change.
   auto design = std::make_shared<ProjectDesign>(start_project_design(home, user, request));
-  const std::int64_t project_id = design->project.id;
   auto job = std::make_unique<Job>();
   Job* j = job.get();
+  j->project_id = design->project.id;
   j->thread = std::thread([design, j] {
     try {
       run_project_design(*design, {.threads = 0, .evaluator = nullptr, .observer = nullptr, .cancel = &j->cancel});
@@ -45,22 +44,26 @@ storage::Design BackgroundDesigns::start(const storage::User& user, const std::s
     }
     j->done = true;
   });
-  jobs_.emplace(project_id, std::move(job));
-  return design->design;
+  jobs_.emplace(design->design.id, std::move(job));
+  return {design->project, design->design, design->resumed, design->abandoned, design->prepared.choice.notes,
+          std::nullopt, false, 0, std::nullopt, "this server"};
 }
 
-bool BackgroundDesigns::stop(std::int64_t project_id) {
+StoppedDesign BackgroundDesigns::stop(Home&, const storage::Project&, const storage::Design& design) {
   std::lock_guard lock(mutex_);
-  const auto it = jobs_.find(project_id);
-  if (it == jobs_.end() || it->second->done) return false;
+  const auto it = jobs_.find(design.id);
+  if (it == jobs_.end() || it->second->done)
+    throw Conflict("design " + std::to_string(design.id) + " runs in another process (pid " + std::to_string(design.pid) +
+                   "): stop it there");
   it->second->cancel.cancel();
-  return true;
+  return {design, "asked its thread to stop after the current race step"};
 }
 
 bool BackgroundDesigns::running_here(std::int64_t project_id) const {
   std::lock_guard lock(mutex_);
-  const auto it = jobs_.find(project_id);
-  return it != jobs_.end() && !it->second->done;
+  for (const auto& [design, job] : jobs_)
+    if (job->project_id == project_id && !job->done) return true;
+  return false;
 }
 
 }  // namespace sd::app

@@ -1,7 +1,5 @@
 #include "app/cluster_designs.hpp"
 
-#include <signal.h>
-
 #include <chrono>
 #include <functional>
 #include <thread>
@@ -24,7 +22,7 @@ namespace {
 using nlohmann::json;
 
 std::string slurm_owner(const std::string& job_id, const storage::Project& project) {
-  return std::string(storage::kSlurmOwnerPrefix) + job_id + "@" + project.cluster->host;
+  return storage::owner_text(storage::SlurmJob{job_id, project.cluster->host});
 }
 
 /// The job: the design started in design/ or, when design/ already holds one (a job submitted
@@ -166,7 +164,7 @@ ClusterSubmission submit_cluster_design(Home& home, const storage::User& user, c
     // Submitted again: the job resumes the design from the checkpoint in its folder.
     const ClusterJobRequest settings = merged(previous->settings, given);
     check_request(settings);
-    out.design = designs.resume(latest->id, std::string(storage::kSlurmOwnerPrefix) + "submitting");
+    out.design = designs.resume(latest->id, storage::owner_text(storage::slurm_submitting()));
     out.resubmitted = !previous->job_id.empty();
     submitting([&] {
       // A first submission that never reached Slurm (an unreachable host, say) is made anew.
@@ -184,7 +182,7 @@ ClusterSubmission submit_cluster_design(Home& home, const storage::User& user, c
     const PreparedDesign checked = check_new_design({*project.mission, *project.budget, request.space, seed});
     if (latest && latest->state == storage::DesignState::interrupted && request.fresh) designs.abandon(latest->id);
     out.design = designs.start({checked.choice.architectures_text(), checked.choice.flavours_text(), seed,
-                                std::string(storage::kSlurmOwnerPrefix) + "submitting"});
+                                storage::owner_text(storage::slurm_submitting())});
     submitting([&] {
       // Recorded before the cluster is asked anything, so that a failure has a row to note it
       // in and run-design can submit this design again.
@@ -241,45 +239,30 @@ std::optional<storage::DesignProgress> refresh_cluster_design(Home& home, const 
   return std::nullopt;
 }
 
-StoppedDesign stop_design(Home& home, const storage::User& user, const std::optional<std::string>& name) {
-  const storage::Project project = project_or_active(home, user, name);
-  storage::Designs designs(home.workspace(), project);
-  auto latest = designs.latest();
-  if (latest && project.cluster) refresh_cluster_design(home, project, *latest);
-  if (!latest || latest->state != storage::DesignState::running)
-    throw Conflict("no design of " + project.name + " is running");
-  StoppedDesign out;
-  if (project.cluster) {
-    storage::ClusterJobs jobs(home.workspace(), project);
-    const auto job = jobs.find(latest->id);
-    if (!job || job->job_id.empty()) throw Conflict("design " + std::to_string(latest->id) + " has no Slurm job to cancel");
-    const cluster::Shell shell = cluster_shell(project);
-    cluster::cancel(shell, job->job_id);
-    // The job's folder comes home once its process is gone, so that status shows where the
-    // design stopped (Slurm ends a cancelled job within its KillWait).
-    for (int i = 0; i < 120 && !cluster::finished(cluster::job_status(shell, job->job_id).state); ++i)
-      std::this_thread::sleep_for(std::chrono::milliseconds(250));
-    if (cluster::exists(shell, job->folder + "/design/design.db"))
-      cluster::fetch_folder(shell, job->folder + "/design", latest->folder);
-    designs.release(latest->id, latest->owner);
-    jobs.observed(latest->id, "CANCELLED",
-                  "Slurm job " + job->job_id + " was cancelled by stop-design; run-design submits it again and it "
-                  "resumes from its last checkpoint");
-    out.how = "cancelled Slurm job " + job->job_id;
-  } else {
-    const auto owner = storage::Owner::parse(latest->owner);
-    if (!owner || owner->job != "cli")
-      throw Conflict("design " + std::to_string(latest->id) + " runs in a web server (run-exp); stop it from the web app");
-    if (storage::local_owner(owner->pid, owner->job).text() != latest->owner)
-      throw Conflict("design " + std::to_string(latest->id) + " runs on another machine (" + latest->owner + ")");
-    ::kill(static_cast<pid_t>(owner->pid), SIGTERM);
-    // Its lease dies with the process: wait for that, so that status right after agrees.
-    for (int i = 0; i < 200 && storage::owner_alive(latest->owner, latest->heartbeat_at, latest->heartbeat_at, latest->pid); ++i)
-      std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    out.how = "stopped process " + std::to_string(owner->pid);
-  }
-  out.design = *designs.latest();  // a local design whose process is gone is found interrupted here
+StartedDesign SlurmJobs::start(Home& home, const storage::User& user, const DesignLaunch& launch) {
+  if (launch.detach) throw InvalidRequest("--detach is for a local project: a cluster project's design runs as a Slurm job anyway");
+  ClusterSubmission s = submit_cluster_design(home, user, launch.design, launch.slurm);
+  StartedDesign out{s.project, s.design, s.resubmitted, std::nullopt, {}, std::nullopt, false, 0, s.job, s.where};
   return out;
+}
+
+StoppedDesign SlurmJobs::stop(Home& home, const storage::Project& project, const storage::Design& design) {
+  storage::ClusterJobs jobs(home.workspace(), project);
+  const auto job = jobs.find(design.id);
+  if (!job || job->job_id.empty()) throw Conflict("design " + std::to_string(design.id) + " has no Slurm job to cancel");
+  const cluster::Shell shell = cluster_shell(project);
+  cluster::cancel(shell, job->job_id);
+  // The job's folder comes home once its process is gone, so that status shows where the
+  // design stopped (Slurm ends a cancelled job within its KillWait).
+  for (int i = 0; i < 120 && !cluster::finished(cluster::job_status(shell, job->job_id).state); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(250));
+  if (cluster::exists(shell, job->folder + "/design/design.db"))
+    cluster::fetch_folder(shell, job->folder + "/design", design.folder);
+  storage::Designs(home.workspace(), project).release(design.id, design.owner);
+  jobs.observed(design.id, "CANCELLED",
+                "Slurm job " + job->job_id + " was cancelled by stop-design; run-design submits it again and it "
+                "resumes from its last checkpoint");
+  return {design, "cancelled Slurm job " + job->job_id};
 }
 
 ClusterCheckReport check_project_cluster(Home& home, const storage::User& user, const std::optional<std::string>& name) {

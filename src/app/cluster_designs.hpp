@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/design_backend.hpp"
 #include "app/home.hpp"
 #include "app/project_design.hpp"
 #include "app/slurm_jobs.hpp"
@@ -45,14 +46,18 @@ ClusterSubmission submit_cluster_design(Home& home, const storage::User& user, c
 std::optional<storage::DesignProgress> refresh_cluster_design(Home& home, const storage::Project& project,
                                                               storage::Design& design);
 
-struct StoppedDesign {
-  storage::Design design;
-  std::string how;  // one line: what was done
+/// The Slurm backend (design_backend.hpp): start submits (submit_cluster_design), refresh asks
+/// Slurm (refresh_cluster_design), stop cancels the job (scancel), waits for Slurm to end it and
+/// fetches its folder home, so that status shows where the design stopped.
+class SlurmJobs final : public DesignBackend {
+ public:
+  StartedDesign start(Home& home, const storage::User& user, const DesignLaunch& launch) override;
+  StoppedDesign stop(Home& home, const storage::Project& project, const storage::Design& design) override;
+  std::optional<storage::DesignProgress> refresh(Home& home, const storage::Project& project,
+                                                 storage::Design& design) override {
+    return refresh_cluster_design(home, project, design);
+  }
 };
-/// Stops the active (or named) project's running design: scancel for a cluster job, SIGTERM to
-/// a local design's process. It becomes interrupted; run-design resumes it. Conflict when no
-/// design runs, or when a web server owns it (stopped from the web app).
-StoppedDesign stop_design(Home& home, const storage::User& user, const std::optional<std::string>& project = std::nullopt);
 
 /// What is missing on the cluster side of the active (or named) cluster project.
 struct ClusterCheckReport {

@@ -18,7 +18,7 @@ namespace {
 
 /// Cluster experiments are owned by their array, whose id lives in cluster_array_jobs.
 std::string array_owner(const storage::Project& project) {
-  return std::string(storage::kSlurmOwnerPrefix) + "array@" + project.cluster->host;
+  return storage::owner_text(storage::SlurmJob{"array", project.cluster->host});
 }
 
 /// Task i makes the design on line i+1 of tasks.txt (its folder, mission file, budget, seed

@@ -1,7 +1,5 @@
 #include "app/project_design.hpp"
 
-#include "app/cluster_designs.hpp"
-#include "app/documents.hpp"
 #include "app/errors.hpp"
 #include "app/inputs.hpp"
 #include "app/lease_keeper.hpp"
@@ -92,51 +90,6 @@ void hand_over(ProjectDesign& d, const std::string& new_owner) {
   Home home(d.home);
   storage::Designs(home.workspace(), d.project).set_owner(d.design.id, new_owner);
   d.design.owner = new_owner;
-}
-
-DesignStatus design_status(Home& home, const storage::User& user, bool complete,
-                           const std::optional<std::string>& project) {
-  DesignStatus status;
-  storage::Projects projects(home.workspace(), user);
-  status.project = project ? projects.get(*project) : projects.require_active();
-  status.design = storage::Designs(home.workspace(), status.project).latest();
-  if (!status.design) return status;
-  std::optional<storage::DesignProgress> on_cluster;
-  if (status.project.cluster) {
-    on_cluster = refresh_cluster_design(home, status.project, *status.design);
-    status.cluster_job = storage::ClusterJobs(home.workspace(), status.project).find(status.design->id);
-  }
-  const storage::Design& d = *status.design;
-  if (on_cluster) {
-    status.progress = *on_cluster;
-    return status;
-  }
-  try {
-    if (std::filesystem::exists(storage::DesignStore::file_in(d.folder))) {
-      status.progress = storage::read_design_progress(d.folder);
-      if (complete) {
-        status.race_log = storage::read_race_log(d.folder);
-        status.convergence = storage::read_convergence(d.folder);
-      }
-    }
-  } catch (const storage::DesignFolderError&) {
-    // A design that has just started may not have committed its tables yet.
-    if (d.state != storage::DesignState::running) throw;
-  }
-  return status;
-}
-
-nlohmann::json status_document(const DesignStatus& status, bool complete) {
-  if (!status.design) return {{"project", status.project.name}, {"design", nullptr}};
-  nlohmann::json out{{"project", status.project.name},
-                     {"design", design_row_document(*status.design)},
-                     {"progress", stored_progress_document(status.progress)}};
-  if (status.cluster_job) out["cluster_job"] = cluster_job_document(*status.cluster_job);
-  if (complete) {
-    out["race_log"] = race_log_document(status.race_log);
-    out["convergence"] = convergence_document(status.convergence);
-  }
-  return out;
 }
 
 TestTarget test_target(Home& home, const storage::User& user, const std::optional<ControlSoftware>& given) {

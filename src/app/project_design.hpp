@@ -1,6 +1,6 @@
 #pragma once
-// Designs of a project: the jobs behind `run-design`, `status` and `test-design`, and behind
-// a server's "start", "watch" and "stop" buttons. A design in a project is a design job
+// Designs of a project: the jobs behind `run-design` and `test-design`, and behind a server's
+// "start" button, whichever backend runs them (design_backend.hpp). A design in a project is a design job
 // (design_job.hpp) whose row in the designs table is leased by the job that runs it
 // (storage/lease.hpp): renewed while it runs, released when it is cancelled, finished or
 // failed when it ends, and found interrupted when its owner dies.
@@ -52,21 +52,6 @@ DesignOutcome run_project_design(ProjectDesign& design, const DesignRunOptions& 
 /// Hands a running design to another owner (a detached child process takes it over): the
 /// parent records the child as owner; the child sets design.owner to the same text itself.
 void hand_over(ProjectDesign& design, const std::string& new_owner);
-
-/// A project's current or last design with what its design.db says: the named project, or the
-/// active one. A cluster project's running design is first brought up to date with Slurm
-/// (app/cluster_designs.hpp), and its progress read on the cluster.
-struct DesignStatus {
-  storage::Project project;
-  std::optional<storage::Design> design;
-  storage::DesignProgress progress;
-  std::vector<storage::RaceRecord> race_log;  // with `complete`
-  std::vector<storage::ConvergencePoint> convergence;  // with `complete`: the best elite per iteration
-  std::optional<storage::ClusterJob> cluster_job;  // a cluster project's design: its Slurm job
-};
-DesignStatus design_status(Home& home, const storage::User& user, bool complete,
-                           const std::optional<std::string>& project = std::nullopt);
-nlohmann::json status_document(const DesignStatus& status, bool complete);
 
 /// What test-design scores: the given control software, or the best of the project's last
 /// finished design, on the project's mission.

@@ -1,5 +1,5 @@
-// A project's running design stopped (`stop-design`), and what a cluster project's cluster
-// lacks (`cluster-check`). The jobs are the application layer's (app/cluster_designs.hpp).
+// A project's running design stopped (`stop-design`, through its backend: app/design_backends.hpp),
+// and what a cluster project's cluster lacks (`cluster-check`, app/cluster_designs.hpp).
 #include <CLI/CLI.hpp>
 
 #include <iostream>
@@ -7,6 +7,7 @@
 
 #include "app/accounts.hpp"
 #include "app/cluster_designs.hpp"
+#include "app/design_backends.hpp"
 #include "cli/command_registry.hpp"
 
 namespace sd::cli {

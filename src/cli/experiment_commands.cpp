@@ -192,7 +192,7 @@ void run_experiment_command(const ExperimentOptions& o) {
     app::Home home;
     return app::start_experiment(home, app::signed_in_user(home), plan,
                                  {o.project.empty() ? std::nullopt : std::optional(o.project),
-                                  storage::local_owner(0, "cli").text()});
+                                  storage::owner_text(storage::local_process())});
   }();
   const std::string& name = started.experiment.name;
   if (!o.json) {

@@ -1,21 +1,18 @@
 // Designing in the active project: run-design (foreground or --detach, resuming an interrupted
-// design) and test-design. The jobs are the application layer's (app/project_design.hpp); this
-// file parses, prints, and forks a detached design.
+// design) and test-design. Where a design runs is the application layer's (app/design_backends.hpp:
+// this process, its detached child, or a Slurm job for a cluster project); this file parses and prints.
 #include <CLI/CLI.hpp>
-#include <fcntl.h>
-#include <unistd.h>
 
-#include <csignal>
-#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <optional>
 
 #include "app/accounts.hpp"
-#include "app/cluster_designs.hpp"
+#include "app/design_backends.hpp"
 #include "app/documents.hpp"
 #include "app/evaluation_job.hpp"
 #include "app/inputs.hpp"
+#include "app/local_processes.hpp"
 #include "app/project_design.hpp"
 #include "app/projects.hpp"
 #include "cli/command_registry.hpp"
@@ -25,7 +22,6 @@
 #include "cli/export_display.hpp"
 #include "cli/score_output.hpp"
 #include "cli/slurm_flags.hpp"
-#include "storage/lease.hpp"
 
 namespace sd::cli {
 namespace {
@@ -39,31 +35,26 @@ struct RunDesignOptions {
   app::ClusterJobRequest job;  // a cluster project's sbatch settings
 };
 
-/// This process's lease owner for a design it runs.
-std::string this_process() { return storage::local_owner(0, "cli").text(); }
-
-app::ProjectDesign start(app::Home& home, const RunDesignOptions& o) {
-  app::ProjectDesignRequest request;
-  request.space = o.flags.request();
-  request.space_given = o.flags.any() || !o.seed.empty();
-  if (!o.seed.empty()) request.seed = app::parse_seed(o.seed);
-  request.fresh = o.fresh;
-  request.owner = this_process();
-  app::ProjectDesign d = app::start_project_design(home, app::signed_in_user(home), request);
-  if (d.resumed) {
-    std::cout << "Design " << d.design.id << " of " << d.project.name << " was interrupted; resuming it"
-              << (request.space_given ? " with the settings it started with (the flags given are ignored)" : "")
-              << ".\n";
-    return d;
+/// What was started, said before it runs: resumed, given up, or new; a Slurm job's submission.
+void print_started(const app::StartedDesign& s, bool space_given) {
+  const storage::Design& d = s.design;
+  if (s.abandoned)
+    std::cout << "Design " << s.abandoned->id << " of " << s.project.name << " is given up (failed); its data stays in "
+              << s.abandoned->folder.string() << ".\n";
+  if (s.resumed && s.job)
+    std::cout << "Design " << d.id << " of " << s.project.name << " was interrupted; submitted again, it resumes from its "
+              << "last checkpoint" << (space_given ? " with the settings it started with" : "") << ".\n";
+  else if (s.resumed)
+    std::cout << "Design " << d.id << " of " << s.project.name << " was interrupted; resuming it"
+              << (space_given ? " with the settings it started with (the flags given are ignored)" : "") << ".\n";
+  if (!s.resumed) {
+    for (const auto& note : s.notes) std::cerr << "swarmdesign: note: " << note << "\n";
+    std::cout << "Design " << d.id << " of " << s.project.name << ": mission " << d.mission << ", budget " << d.budget
+              << ", seed " << d.seed << ", " << d.architectures << " / " << d.flavours << ".\n";
   }
-  if (d.abandoned)
-    std::cout << "Design " << d.abandoned->id << " of " << d.project.name << " is given up (failed); its data stays in "
-              << d.abandoned->folder.string() << ".\n";
-  for (const auto& note : d.prepared.choice.notes) std::cerr << "swarmdesign: note: " << note << "\n";
-  std::cout << "Design " << d.design.id << " of " << d.project.name << ": mission " << d.design.mission << ", budget "
-            << d.design.budget << ", seed " << d.design.seed << ", " << d.design.architectures << " / "
-            << d.design.flavours << ".\n";
-  return d;
+  if (s.job)
+    std::cout << "Submitted to Slurm as job " << s.job->job_id << " on " << s.where << "; its folder there: "
+              << s.job->folder << "\n  watch it:  swarmdesign status\n  stop it:   swarmdesign stop-design\n";
 }
 
 /// Runs the design (the app records how it ended) and prints the report.
@@ -75,75 +66,29 @@ void run_and_report(app::ProjectDesign& d, unsigned threads, ProgressLine::Mode 
   std::cout << "Test it on fresh seeds with: swarmdesign test-design\n" << std::flush;
 }
 
-/// Continues in a child process that survives the terminal: its own session, no terminal,
-/// output in DIR/design.log. Parent and child both hand the design's lease to the child. No
-/// database connection may be open here (SQLite's rule for fork).
-void detach(app::ProjectDesign& d, unsigned threads) {
-  const auto log = d.design.folder / "design.log";
-  std::cout << std::flush;
-  std::fflush(nullptr);
-  const pid_t child = ::fork();
-  if (child < 0) throw std::runtime_error("cannot start the background process");
-  if (child == 0) {
-    ::setsid();
-    std::signal(SIGHUP, SIG_IGN);
-    const int null_fd = ::open("/dev/null", O_RDONLY);
-    const int log_fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0600);
-    if (null_fd < 0 || log_fd < 0) std::_Exit(1);
-    ::dup2(null_fd, STDIN_FILENO);
-    ::dup2(log_fd, STDOUT_FILENO);
-    ::dup2(log_fd, STDERR_FILENO);
-    ::close(null_fd);
-    ::close(log_fd);
-    d.design.owner = this_process();  // the parent records the same owner for us
-    run_and_report(d, threads, ProgressLine::Mode::Log);
-    return;
-  }
-  app::hand_over(d, storage::local_owner(child, "cli").text());
-  std::cout << "Design " << d.design.id << " runs in the background (process " << child << ").\n"
-            << "  watch it:  swarmdesign status\n"
-            << "  its log:   " << log.string() << "\n";
-}
-
-/// A cluster project's design goes to Slurm: submitted, or submitted again to resume.
-void submit(app::Home& home, const RunDesignOptions& o) {
-  app::ProjectDesignRequest request;
-  request.space = o.flags.request();
-  request.space_given = o.flags.any() || !o.seed.empty();
-  if (!o.seed.empty()) request.seed = app::parse_seed(o.seed);
-  request.fresh = o.fresh;
-  const app::ClusterSubmission s = app::submit_cluster_design(home, app::signed_in_user(home), request, o.job);
-  const storage::Design& d = s.design;
-  if (s.resubmitted)
-    std::cout << "Design " << d.id << " of " << s.project.name << " was interrupted; submitted again, it resumes from its "
-              << "last checkpoint" << (request.space_given ? " with the settings it started with" : "") << ".\n";
-  else
-    std::cout << "Design " << d.id << " of " << s.project.name << ": mission " << d.mission << ", budget " << d.budget
-              << ", seed " << d.seed << ", " << d.architectures << " / " << d.flavours << ".\n";
-  std::cout << "Submitted to Slurm as job " << s.job.job_id << " on " << s.where << "; its folder there: " << s.job.folder
-            << "\n  watch it:  swarmdesign status\n  stop it:   swarmdesign stop-design\n";
-}
-
 void run_design(const RunDesignOptions& o, int mpi_ranks) {
+  app::DesignLaunch launch;
+  launch.design.space = o.flags.request();
+  launch.design.space_given = o.flags.any() || !o.seed.empty();
+  if (!o.seed.empty()) launch.design.seed = app::parse_seed(o.seed);
+  launch.design.fresh = o.fresh;
+  launch.slurm = o.job;
+  launch.detach = o.detach;
+  launch.mpi_ranks = mpi_ranks;
   // The home's database connection is closed before a fork: SQLite connections must not cross one.
-  std::optional<app::ProjectDesign> started;
+  std::optional<app::StartedDesign> started;
   {
     app::Home home;
-    if (app::active_project(home, app::signed_in_user(home)).cluster) {
-      if (o.detach) throw UsageError("--detach is for a local project: a cluster project's design runs as a Slurm job anyway");
-      return submit(home, o);
-    }
-    if (o.job.given())
-      throw UsageError("--nodes, --ntasks, --cpus-per-task, --time, --partition and --account are for a cluster project; "
-                       "this one runs on this machine");
-    // A forked child would leave the MPI job behind: mpirun waits for rank 0 anyway.
-    if (o.detach && mpi_ranks > 1)
-      throw UsageError("--detach cannot be used under mpirun (mpirun waits for its ranks); leave it out");
-    started.emplace(start(home, o));
+    started.emplace(app::start_design(home, app::signed_in_user(home), launch));
   }
-  app::ProjectDesign& d = *started;
-  if (o.detach) return detach(d, o.threads);
-  run_and_report(d, o.threads, ProgressLine::terminal_if(true));
+  print_started(*started, launch.design.space_given);
+  if (!started->run_here) return;  // it runs elsewhere (a Slurm job)
+  if (!o.detach) return run_and_report(*started->run_here, o.threads, ProgressLine::terminal_if(true));
+  app::LocalProcesses::detach(*started);
+  if (started->in_child) return run_and_report(*started->run_here, o.threads, ProgressLine::Mode::Log);
+  std::cout << "Design " << started->design.id << " runs in the background (process " << started->child << ").\n"
+            << "  watch it:  swarmdesign status\n"
+            << "  its log:   " << (started->design.folder / "design.log").string() << "\n";
 }
 
 struct TestDesignOptions {

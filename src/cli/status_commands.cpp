@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "app/accounts.hpp"
+#include "app/design_backends.hpp"
 #include "app/experiment_job.hpp"
 #include "app/export_argos.hpp"
 #include "app/project_design.hpp"

@@ -34,12 +34,6 @@ Design read_design(const Statement& row, const Workspace& workspace) {
   design.heartbeat_at = row.integer(15);
   return design;
 }
-
-/// The owner's pid, kept beside the lease for people (status).
-std::int64_t owner_pid(const std::string& owner) {
-  const auto parsed = Owner::parse(owner);
-  return parsed ? parsed->pid : 0;
-}
 }  // namespace
 
 DesignState design_state_from(const std::string& text) {
@@ -73,20 +67,7 @@ Design as_reported(Design design) {
 
 Designs::Designs(Workspace& workspace, Project project) : workspace_(workspace), project_(std::move(project)) {}
 
-void Designs::mark_dead_designs_interrupted() {
-  Database& db = workspace_.database();
-  std::vector<std::int64_t> dead;  // collected first: no updates while the query is open
-  auto running = db.prepare(
-      "SELECT id, coalesce(pid, 0), coalesce(owner, ''), coalesce(heartbeat_at, 0) FROM designs "
-      "WHERE project_id = ? AND state = 'running'");
-  running.bind(1, project_.id);
-  const std::int64_t now = unix_now();
-  while (running.step())
-    if (!owner_alive(running.text(2), running.integer(3), now, running.integer(1))) dead.push_back(running.integer(0));
-  for (const std::int64_t id : dead)
-    db.prepare("UPDATE designs SET state = 'interrupted', updated_at = ? WHERE id = ? AND state = 'running'")
-        .bind(1, unix_now()).bind(2, id).run();
-}
+Lease Designs::lease() { return Lease(workspace_.database(), kDesignLeases, project_.id); }
 
 Design Designs::start(const DesignRequest& request) {
   if (!project_.mission) throw NotFound("project " + project_.name + " has no mission; choose one with: swarmdesign set-mission");
@@ -96,7 +77,7 @@ Design Designs::start(const DesignRequest& request) {
 
   Database& db = workspace_.database();
   Transaction transaction(db);
-  mark_dead_designs_interrupted();
+  lease().sweep_dead();
   auto running = db.prepare("SELECT id FROM designs WHERE project_id = ? AND state = 'running'");
   running.bind(1, project_.id);
   if (running.step())
@@ -129,41 +110,23 @@ void Designs::set_state(std::int64_t design_id, DesignState state, std::string_v
 Design Designs::resume(std::int64_t design_id, const std::string& owner) {
   Database& db = workspace_.database();
   Transaction transaction(db);
-  mark_dead_designs_interrupted();
+  lease().sweep_dead();
   get(design_id);  // NotFound for another project's design
   auto running = db.prepare("SELECT id FROM designs WHERE project_id = ? AND state = 'running'");
   running.bind(1, project_.id);
   if (running.step())
     throw Conflict("design " + std::to_string(running.integer(0)) + " of project " + project_.name + " is still running");
   set_state(design_id, DesignState::running, "('interrupted', 'failed')");
-  db.prepare("UPDATE designs SET pid = ?, owner = ?, heartbeat_at = ? WHERE id = ?")
-      .bind(1, owner_pid(owner)).bind(2, owner).bind(3, unix_now()).bind(4, design_id).run();
+  lease().hand_over(design_id, owner);
   transaction.commit();
   return get(design_id);
 }
 
-void Designs::set_owner(std::int64_t design_id, const std::string& owner) {
-  const std::int64_t now = unix_now();
-  workspace_.database()
-      .prepare("UPDATE designs SET pid = ?, owner = ?, heartbeat_at = ?, updated_at = ? "
-               "WHERE id = ? AND project_id = ? AND state = 'running'")
-      .bind(1, owner_pid(owner)).bind(2, owner).bind(3, now).bind(4, now).bind(5, design_id).bind(6, project_.id).run();
-}
+void Designs::set_owner(std::int64_t design_id, const std::string& owner) { lease().hand_over(design_id, owner); }
 
-bool Designs::heartbeat(std::int64_t design_id, const std::string& owner) {
-  Database& db = workspace_.database();
-  db.prepare("UPDATE designs SET heartbeat_at = ? WHERE id = ? AND project_id = ? AND state = 'running' AND owner = ?")
-      .bind(1, unix_now()).bind(2, design_id).bind(3, project_.id).bind(4, owner).run();
-  return db.changes() > 0;
-}
+bool Designs::heartbeat(std::int64_t design_id, const std::string& owner) { return lease().renew(design_id, owner); }
 
-void Designs::release(std::int64_t design_id, const std::string& owner) {
-  Database& db = workspace_.database();
-  db.prepare("UPDATE designs SET state = 'interrupted', updated_at = ? "
-             "WHERE id = ? AND project_id = ? AND state = 'running' AND owner = ?")
-      .bind(1, unix_now()).bind(2, design_id).bind(3, project_.id).bind(4, owner).run();
-  if (db.changes() == 0) throw Conflict("design " + std::to_string(design_id) + " is not running under this job");
-}
+void Designs::release(std::int64_t design_id, const std::string& owner) { lease().release(design_id, owner); }
 
 void Designs::finish(std::int64_t design_id, const std::string& best_config, double best_score) {
   Database& db = workspace_.database();
@@ -181,7 +144,7 @@ void Designs::mark_failed(std::int64_t design_id) { fail(design_id, "('running',
 void Designs::fail(std::int64_t design_id, std::string_view from_states) {
   Database& db = workspace_.database();
   Transaction transaction(db);
-  mark_dead_designs_interrupted();  // a dead design's row may still say "running"
+  lease().sweep_dead();  // a dead design's row may still say "running"
   set_state(design_id, DesignState::failed, from_states);
   db.prepare("UPDATE designs SET finished_at = updated_at WHERE id = ?").bind(1, design_id).run();
   transaction.commit();

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "storage/lease.hpp"
 #include "storage/projects.hpp"
 #include "storage/workspace.hpp"
 
@@ -60,6 +61,7 @@ class Designs {
   /// Renews the owner's lease; false when the design is no longer this owner's to run.
   bool heartbeat(std::int64_t design_id, const std::string& owner);
   /// The owner stops a running design that it can resume later: it becomes interrupted.
+  /// Conflict when the owner does not hold it (storage/lease.hpp).
   void release(std::int64_t design_id, const std::string& owner);
   void finish(std::int64_t design_id, const std::string& best_config, double best_score);
   void mark_failed(std::int64_t design_id);
@@ -75,7 +77,7 @@ class Designs {
   std::vector<Design> list();
 
  private:
-  void mark_dead_designs_interrupted();
+  Lease lease();
   void set_state(std::int64_t design_id, DesignState state, std::string_view from_states);
   void fail(std::int64_t design_id, std::string_view from_states);
 

@@ -72,24 +72,13 @@ std::string to_string(DesignStage stage) {
 
 Experiments::Experiments(Workspace& workspace, Project project) : workspace_(workspace), project_(std::move(project)) {}
 
-void Experiments::mark_dead_experiments_interrupted() {
-  Database& db = workspace_.database();
-  std::vector<std::int64_t> dead;
-  auto running = db.prepare("SELECT id, owner, heartbeat_at FROM experiments WHERE project_id = ? AND state = 'running'");
-  running.bind(1, project_.id);
-  const std::int64_t now = unix_now();
-  while (running.step())
-    if (!owner_alive(running.text(1), running.integer(2), now, 0)) dead.push_back(running.integer(0));
-  for (const std::int64_t id : dead)
-    db.prepare("UPDATE experiments SET state = 'interrupted', updated_at = ? WHERE id = ? AND state = 'running'")
-        .bind(1, now).bind(2, id).run();
-}
+Lease Experiments::lease() { return Lease(workspace_.database(), kExperimentLeases, project_.id); }
 
 std::pair<Experiment, bool> Experiments::start(const std::string& name, const std::string& protocol,
                                                const std::vector<PlannedDesign>& designs, const std::string& owner) {
   Database& db = workspace_.database();
   Transaction transaction(db);
-  mark_dead_experiments_interrupted();
+  lease().sweep_dead();
   const std::int64_t now = unix_now();
 
   if (const auto existing = find(name)) {
@@ -103,9 +92,8 @@ std::pair<Experiment, bool> Experiments::start(const std::string& name, const st
       transaction.commit();
       return {*existing, true};
     }
-    db.prepare("UPDATE experiments SET state = 'running', owner = ?, heartbeat_at = ?, updated_at = ?, finished_at = NULL "
-               "WHERE id = ?")
-        .bind(1, owner).bind(2, now).bind(3, now).bind(4, existing->id).run();
+    db.prepare("UPDATE experiments SET state = 'running', finished_at = NULL WHERE id = ?").bind(1, existing->id).run();
+    lease().hand_over(existing->id, owner);
     transaction.commit();
     return {get_by_id(existing->id), true};
   }
@@ -130,10 +118,7 @@ std::pair<Experiment, bool> Experiments::start(const std::string& name, const st
 }
 
 bool Experiments::heartbeat(std::int64_t experiment_id, const std::string& owner) {
-  Database& db = workspace_.database();
-  db.prepare("UPDATE experiments SET heartbeat_at = ? WHERE id = ? AND project_id = ? AND state = 'running' AND owner = ?")
-      .bind(1, unix_now()).bind(2, experiment_id).bind(3, project_.id).bind(4, owner).run();
-  return db.changes() > 0;
+  return lease().renew(experiment_id, owner);
 }
 
 void Experiments::finish(std::int64_t experiment_id) {
@@ -143,12 +128,7 @@ void Experiments::finish(std::int64_t experiment_id) {
       .bind(1, now).bind(2, now).bind(3, experiment_id).bind(4, project_.id).run();
 }
 
-void Experiments::release(std::int64_t experiment_id, const std::string& owner) {
-  workspace_.database()
-      .prepare("UPDATE experiments SET state = 'interrupted', updated_at = ? "
-               "WHERE id = ? AND project_id = ? AND state = 'running' AND owner = ?")
-      .bind(1, unix_now()).bind(2, experiment_id).bind(3, project_.id).bind(4, owner).run();
-}
+void Experiments::release(std::int64_t experiment_id, const std::string& owner) { lease().release(experiment_id, owner); }
 
 std::optional<Experiment> Experiments::find(const std::string& name) {
   auto query = workspace_.database().prepare(std::string(kSelectExperiments) + "AND name = ?");

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "storage/designs.hpp"
+#include "storage/lease.hpp"
 #include "storage/projects.hpp"
 #include "storage/workspace.hpp"
 
@@ -67,6 +68,7 @@ class Experiments {
   bool heartbeat(std::int64_t experiment_id, const std::string& owner);
   void finish(std::int64_t experiment_id);
   /// The owner stops: the experiment becomes interrupted and resumes when started again.
+  /// Conflict when the owner does not hold it (storage/lease.hpp), as for a design.
   void release(std::int64_t experiment_id, const std::string& owner);
 
   std::optional<Experiment> find(const std::string& name);
@@ -98,7 +100,7 @@ class Experiments {
   std::vector<std::pair<std::uint64_t, double>> assessments(std::int64_t design_id);
 
  private:
-  void mark_dead_experiments_interrupted();
+  Lease lease();
   Experiment get_by_id(std::int64_t id);
   /// Only designs of this project's experiments may be touched.
   void require_design(std::int64_t design_id);

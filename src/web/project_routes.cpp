@@ -1,5 +1,6 @@
-// The design monitor: a user's projects, their designs (started and stopped here or followed
-// while the CLI runs them), and control software saved in a project.
+// The design monitor: a user's projects, their designs (started and stopped through their
+// backend, app/design_backends.hpp, whoever runs them), and control software saved in a project.
+#include "app/design_backends.hpp"
 #include "app/documents.hpp"
 #include "app/errors.hpp"
 #include "app/experiment_job.hpp"
@@ -70,17 +71,16 @@ void add_project_routes(Routes& routes) {
   });
 
   routes.post(project + "/designs", [](Call& call) {
-    return app::design_row_document(call.context.designs.start(call.user, call.match(1), design_request(call.body)));
+    app::DesignLaunch launch;
+    launch.design = design_request(call.body);
+    launch.design.project = call.match(1);
+    return app::design_row_document(app::start_design(call.home, call.user, launch, &call.context.designs).design);
   });
 
+  // Whoever runs it: this server's thread, a CLI process of this machine, a Slurm job.
   routes.post(project + "/designs/stop", [](Call& call) -> json {
-    const storage::Project p = project_of(call);
-    if (call.context.designs.stop(p.id)) return {{"stopping", true}};
-    const auto latest = storage::Designs(call.home.workspace(), p).latest();
-    if (latest && latest->state == storage::DesignState::running)
-      throw app::Conflict("design " + std::to_string(latest->id) + " runs in another process (pid " +
-                          std::to_string(latest->pid) + "): stop it there");
-    throw app::Conflict("no design of " + p.name + " is running");
+    app::stop_design(call.home, call.user, call.match(1), &call.context.designs);
+    return {{"stopping", true}};
   });
 
   routes.get(project + "/software", [](Call& call) {

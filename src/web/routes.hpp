@@ -22,7 +22,7 @@ namespace sd::web {
 struct WebContext {
   WebContext(std::filesystem::path home_folder, std::filesystem::path web_root_folder, storage::SignInPolicy policy)
       : home(home_folder), web_root(std::move(web_root_folder)), sign_in(policy), addresses(policy),
-        designs(home_folder, "web") {}
+        designs("web") {}
   std::filesystem::path home;
   std::filesystem::path web_root;  // the built front end (the report page's bundle)
   storage::SignInPolicy sign_in;

@@ -10,6 +10,7 @@
 #include "app/accounts.hpp"
 #include "app/documents.hpp"
 #include "app/errors.hpp"
+#include "app/design_backends.hpp"
 #include "app/project_design.hpp"
 #include "app/projects.hpp"
 #include "core/executor.hpp"
@@ -56,7 +57,7 @@ class ProjectDesign : public ::testing::Test {
     r.space.fsm = true;
     r.space.flavours = {Flavour::Chocolate};
     r.seed = seed;
-    r.owner = storage::local_owner(0, "test").text();
+    r.owner = storage::owner_text(storage::server_thread("test"));
     return r;
   }
 

@@ -5,6 +5,10 @@
 // started from the page can be followed, stopped and resumed.
 #include <gtest/gtest.h>
 
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <atomic>
 #include <cstring>
 #include <filesystem>
@@ -18,7 +22,9 @@
 #include "control/config_string.hpp"
 #include "evaluation/simulation.hpp"
 #include "missions/catalogue.hpp"
+#include "storage/designs.hpp"
 #include "storage/lease.hpp"
+#include "storage/projects.hpp"
 #include "web/web_client.hpp"
 #include "workflow/design_helpers.hpp"
 
@@ -174,7 +180,7 @@ TEST_F(WebServer, AnExperimentsReportIsServedToItsOwnerOnlyAsOneSelfContainedPag
                           {{"alone", "automode", {"fsm"}, {"chocolate"}}}}};
     app::Home home(root_ / "home");
     const storage::User alice = app::sign_in_here(home, "alice", "alice-password").user;
-    app::StartedExperiment e = app::start_experiment(home, alice, app::plan_experiment(protocol), {"mine", storage::local_owner(0, "test").text()});
+    app::StartedExperiment e = app::start_experiment(home, alice, app::plan_experiment(protocol), {"mine", storage::owner_text(storage::server_thread("test"))});
     app::run_experiment(e, {.threads = 2, .evaluator = nullptr, .observer = nullptr, .cancel = nullptr});
   }
   const Answer list = alice_->get("/api/projects/mine/experiments");
@@ -307,6 +313,48 @@ TEST_F(WebServer, FiftyViewersWatchOneRunAndEachGetsAllOfIt) {
     EXPECT_EQ(events(seen[v], "end"), reference) << "viewer " << v;
   }
   EXPECT_EQ(alice_->get("/api/session").status, 200);
+}
+
+// The page stops a design whoever runs it, through the design's backend: here a CLI process of
+// this machine (a stand-in that only sleeps, leased as a CLI owner), which gets SIGTERM; a
+// design on a thread of another server is still refused, and another user never reaches it.
+TEST_F(WebServer, ThePageStopsADesignTheCliRunsButNotAnotherServersThread) {
+  alice_project("c");
+  const pid_t cli = ::fork();
+  ASSERT_GE(cli, 0);
+  if (cli == 0) {
+    ::execl("/bin/sleep", "sleep", "600", static_cast<char*>(nullptr));
+    std::_Exit(127);
+  }
+  std::int64_t design_id = 0;
+  {
+    app::Home home(root_ / "home");
+    const storage::User alice = app::sign_in_here(home, "alice", "alice-password").user;
+    storage::Designs designs(home.workspace(), storage::Projects(home.workspace(), alice).get("c"));
+    design_id = designs.start({"fsm", "chocolate", 1, storage::owner_text(storage::local_process(cli))}).id;
+  }
+  EXPECT_EQ(alice_->get("/api/projects/c/status").body.at("design").at("state"), "running");
+  EXPECT_EQ(bob_->post("/api/projects/c/designs/stop", json::object()).status, 404);
+  const Answer stop = alice_->post("/api/projects/c/designs/stop", json::object());
+  ASSERT_EQ(stop.status, 200) << stop.text;
+  EXPECT_EQ(stop.body, (json{{"stopping", true}}));
+  int wait_status = 0;
+  ASSERT_EQ(::waitpid(cli, &wait_status, 0), cli);
+  EXPECT_TRUE(WIFSIGNALED(wait_status) && WTERMSIG(wait_status) == SIGTERM);
+  const Answer after = alice_->get("/api/projects/c/status");
+  EXPECT_EQ(after.body.at("design").at("id"), design_id);
+  EXPECT_EQ(after.body.at("design").at("state"), "interrupted");
+
+  {  // A thread of another server (this process's pid, another job name): only that server stops it.
+    app::Home home(root_ / "home");
+    const storage::User alice = app::sign_in_here(home, "alice", "alice-password").user;
+    storage::Designs designs(home.workspace(), storage::Projects(home.workspace(), alice).get("c"));
+    designs.abandon(design_id);
+    designs.start({"fsm", "chocolate", 2, storage::owner_text(storage::server_thread("other-server-1"))});
+  }
+  const Answer refused = alice_->post("/api/projects/c/designs/stop", json::object());
+  EXPECT_EQ(refused.status, 409) << refused.text;
+  EXPECT_EQ(alice_->get("/api/projects/c/status").body.at("design").at("state"), "running");
 }
 
 TEST_F(WebServer, ADesignStartedFromThePageIsFollowedStoppedAndResumed) {

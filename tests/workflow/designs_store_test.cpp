@@ -3,9 +3,13 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <functional>
+#include <variant>
+
 #include "storage/accounts.hpp"
 #include "storage/cluster_jobs.hpp"
 #include "storage/designs.hpp"
+#include "storage/experiments.hpp"
 #include "storage/errors.hpp"
 #include "storage/clock.hpp"
 #include "storage/lease.hpp"
@@ -18,7 +22,7 @@ namespace {
 
 constexpr int kDeadPid = 0x7ffffff0;  // above any pid_max: no such process
 
-std::string owner_of(std::int64_t pid) { return storage::local_owner(pid, "test").text(); }
+std::string owner_of(std::int64_t pid) { return storage::owner_text(storage::server_thread("test", pid)); }
 std::string me() { return owner_of(::getpid()); }
 
 class workflow_designs : public WorkflowTest {
@@ -130,10 +134,10 @@ TEST_F(workflow_designs, AnOwnerOnThisMachineLivesAsLongAsItsProcess) {
   EXPECT_EQ(design.owner, me());
   EXPECT_EQ(designs.latest()->state, storage::DesignState::running);
   // The same pid, alive, but a process that started at another time: the pid was reused.
-  const auto mine = *storage::Owner::parse(me());
-  storage::Owner reused = mine;
+  const auto mine = std::get<storage::ServerThread>(*storage::parse_owner(me()));
+  storage::ServerThread reused = mine;
   reused.start_time = "1";
-  workspace().database().execute("UPDATE designs SET owner = '" + reused.text() + "' WHERE id = " + std::to_string(design.id));
+  workspace().database().execute("UPDATE designs SET owner = '" + storage::owner_text(reused) + "' WHERE id = " + std::to_string(design.id));
   EXPECT_EQ(designs.latest()->state, storage::DesignState::interrupted);
   const auto fresh = designs.start(request(me()));
   EXPECT_NE(fresh.id, design.id);
@@ -145,7 +149,7 @@ TEST_F(workflow_designs, AnOwnerOnThisMachineLivesAsLongAsItsProcess) {
 
 TEST_F(workflow_designs, AnOwnerOnAnotherMachineLivesWhileItsHeartbeatIsFresh) {
   storage::Designs designs(workspace(), project("p"));
-  const std::string remote = storage::Owner{"another-boot", "777", 4242, "rank-0"}.text();
+  const std::string remote = storage::owner_text(storage::ServerThread{{"another-boot", "777", 4242}, "rank-0"});
   const auto design = designs.start(request(remote));
   EXPECT_EQ(designs.latest()->state, storage::DesignState::running);  // just started: fresh heartbeat
   EXPECT_TRUE(designs.heartbeat(design.id, remote));
@@ -161,7 +165,7 @@ TEST_F(workflow_designs, AnOwnerOnAnotherMachineLivesWhileItsHeartbeatIsFresh) {
 TEST_F(workflow_designs, AnOwnerReleasesADesignItStopsAndHandsOneOver) {
   storage::Designs designs(workspace(), project("p"));
   const auto design = designs.start(request(me()));
-  const std::string child = storage::Owner{"", "", 1, "cli"}.text();
+  const std::string child = storage::owner_text(storage::LocalProcess{{"", "", 1}});
   EXPECT_THROW(designs.release(design.id, child), storage::Conflict);  // not its owner
   designs.set_owner(design.id, child);
   EXPECT_EQ(designs.latest()->owner, child);
@@ -170,17 +174,95 @@ TEST_F(workflow_designs, AnOwnerReleasesADesignItStopsAndHandsOneOver) {
   EXPECT_EQ(designs.latest()->state, storage::DesignState::interrupted);
 }
 
+// One Lease (storage/lease.hpp) for every leased table: the same renewal, the same refusal to
+// release a lease the caller does not hold (Conflict, the row untouched), the same release, and
+// the same sweep of a dead owner, for designs and for experiments.
+TEST_F(workflow_designs, EveryLeasedTableKeepsTheSameLease) {
+  const storage::Project p = project("p");
+  storage::Designs designs(workspace(), p);
+  storage::Experiments experiments(workspace(), p);
+  const std::string stranger = storage::owner_text(storage::ServerThread{{"another-boot", "1", 7}, "web-1"});
+  struct Table {
+    std::function<std::int64_t(const std::string&)> start;
+    std::function<bool(std::int64_t, const std::string&)> renew;
+    std::function<void(std::int64_t, const std::string&)> release;
+    std::function<storage::DesignState(std::int64_t)> state;
+  };
+  int n = 0;
+  const std::vector<std::pair<std::string, Table>> tables = {
+      {"designs",
+       {[&](const std::string& o) { return designs.start(request(o)).id; },
+        [&](std::int64_t id, const std::string& o) { return designs.heartbeat(id, o); },
+        [&](std::int64_t id, const std::string& o) { designs.release(id, o); },
+        [&](std::int64_t id) {
+          for (const auto& d : designs.list())
+            if (d.id == id) return d.state;
+          return storage::DesignState::failed;
+        }}},
+      {"experiments",
+       {[&](const std::string& o) { return experiments.start("e" + std::to_string(++n), "{}", {}, o).first.id; },
+        [&](std::int64_t id, const std::string& o) { return experiments.heartbeat(id, o); },
+        [&](std::int64_t id, const std::string& o) { experiments.release(id, o); },
+        [&](std::int64_t id) {
+          for (const auto& e : experiments.list())
+            if (e.id == id) return e.state;
+          return storage::DesignState::failed;
+        }}}};
+  for (const auto& [name, t] : tables) {
+    const std::int64_t id = t.start(me());
+    EXPECT_TRUE(t.renew(id, me())) << name;
+    EXPECT_FALSE(t.renew(id, stranger)) << name;
+    EXPECT_THROW(t.release(id, stranger), storage::Conflict) << name;
+    EXPECT_EQ(t.state(id), storage::DesignState::running) << name << ": a refused release leaves the row as it was";
+    t.release(id, me());
+    EXPECT_EQ(t.state(id), storage::DesignState::interrupted) << name;
+    EXPECT_THROW(t.release(id, me()), storage::Conflict) << name << ": released twice";
+    const std::int64_t dead = t.start(owner_of(kDeadPid));
+    EXPECT_EQ(t.state(dead), storage::DesignState::interrupted) << name << ": a dead owner's row reads interrupted";
+  }
+  // Each table's next start sweeps: the dead rows become interrupted in the table itself.
+  EXPECT_EQ(query("SELECT count(*) FROM designs WHERE state = 'running'"), "1");
+  EXPECT_EQ(query("SELECT count(*) FROM experiments WHERE state = 'running'"), "1");
+  designs.start(request(me()));
+  experiments.start("e9", "{}", {}, me());
+  for (const std::string table : {"designs", "experiments"}) {
+    EXPECT_EQ(query("SELECT count(*) FROM " + table + " WHERE state = 'running'"), "1") << table;
+    EXPECT_EQ(query("SELECT count(*) FROM " + table + " WHERE state = 'interrupted'"), "2") << table;
+  }
+}
+
+TEST(DesignLease, EveryOwnerKindReadsBackFromItsStoredText) {
+  // The texts existing databases hold (schema.cpp's migration 3 wrote "<process>/<pid>/cli").
+  const auto cli = storage::parse_owner("boot/123/42/cli");
+  ASSERT_TRUE(cli && std::holds_alternative<storage::LocalProcess>(*cli));
+  EXPECT_EQ(std::get<storage::LocalProcess>(*cli).pid, 42);
+  const auto web = storage::parse_owner("boot/123/42/web-7");
+  ASSERT_TRUE(web && std::holds_alternative<storage::ServerThread>(*web));
+  EXPECT_EQ(std::get<storage::ServerThread>(*web).job, "web-7");
+  const auto slurm = storage::parse_owner("slurm:4711@hpc.example.org");
+  ASSERT_TRUE(slurm && std::holds_alternative<storage::SlurmJob>(*slurm));
+  EXPECT_EQ(std::get<storage::SlurmJob>(*slurm).id, "4711");
+  EXPECT_EQ(std::get<storage::SlurmJob>(*slurm).host, "hpc.example.org");
+  for (const std::string text : {"boot/123/42/cli", "boot/123/42/web-7", "slurm:4711@hpc.example.org", "slurm:submitting",
+                                 "slurm:array@h", "//0/cli"})
+    EXPECT_EQ(storage::owner_text(*storage::parse_owner(text)), text);
+  EXPECT_EQ(storage::owner_pid("slurm:4711@h"), 0);
+  EXPECT_EQ(storage::owner_pid("boot/123/42/cli"), 42);
+}
+
 TEST(DesignLease, OwnersReadBackAndNameThisProcess) {
-  const storage::Owner mine = storage::local_owner(0, "web-3");
+  const storage::ServerThread mine = storage::server_thread("web-3");
   EXPECT_EQ(mine.pid, ::getpid());
   EXPECT_FALSE(mine.boot_id.empty());
-  EXPECT_EQ(mine.text(), storage::local_owner(::getpid(), "web-3").text());  // stable
-  const auto back = storage::Owner::parse(mine.text());
+  EXPECT_EQ(storage::owner_text(mine), storage::owner_text(storage::server_thread("web-3", ::getpid())));  // stable
+  const auto parsed = storage::parse_owner(storage::owner_text(mine));
+  ASSERT_TRUE(parsed);
+  const auto* back = std::get_if<storage::ServerThread>(&*parsed);
   ASSERT_TRUE(back);
-  EXPECT_EQ(back->text(), mine.text());
+  EXPECT_EQ(storage::owner_text(*back), storage::owner_text(mine));
   EXPECT_EQ(back->job, "web-3");
-  EXPECT_NE(storage::local_owner(1, "x").start_time, mine.start_time);  // init started before us
-  EXPECT_FALSE(storage::Owner::parse("no slashes"));
+  EXPECT_NE(storage::server_thread("x", 1).start_time, mine.start_time);  // init started before us
+  EXPECT_FALSE(storage::parse_owner("no slashes"));
   EXPECT_FALSE(storage::owner_alive(owner_of(kDeadPid), storage::unix_now(), storage::unix_now(), 0));
 }
 
@@ -199,7 +281,7 @@ TEST_F(workflow_designs, ASlurmJobOwnsItsDesignUntilTheJobIsSeenToEnd) {
   EXPECT_EQ(remote.cluster->workdir_or_default(), "/scratch/al");
   EXPECT_EQ(remote.cluster->binary_or_default(), "swarmdesign");
   auto request_of_job = request(me());
-  request_of_job.owner = "slurm:42@hpc.example.org";
+  request_of_job.owner = storage::owner_text(storage::SlurmJob{"42", "hpc.example.org"});
   storage::Designs designs(workspace(), remote);
   const storage::Design d = designs.start(request_of_job);
   // No process here and no heartbeat: still running, until Slurm says otherwise.

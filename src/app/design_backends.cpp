@@ -1,0 +1,95 @@
+#include "app/design_backends.hpp"
+
+#include "app/cluster_designs.hpp"
+#include "app/documents.hpp"
+#include "app/errors.hpp"
+#include "app/local_processes.hpp"
+#include "app/projects.hpp"
+#include "storage/design_store.hpp"
+#include "storage/lease.hpp"
+
+namespace sd::app {
+
+namespace {
+
+LocalProcesses local_processes;
+SlurmJobs slurm_jobs;
+
+/// Who can stop a running design: the backend of its owner, whichever started it.
+DesignBackend& stopper_of(const storage::Design& design, DesignBackend* server) {
+  const auto owner = storage::parse_owner(design.owner);
+  if (owner && std::holds_alternative<storage::SlurmJob>(*owner)) return slurm_jobs;
+  if (owner && std::holds_alternative<storage::ServerThread>(*owner) && server) return *server;
+  return local_processes;  // a CLI process; it refuses what it cannot reach
+}
+
+}  // namespace
+
+DesignBackend& backend_for(const storage::Project& project, DesignBackend* server) {
+  if (project.cluster) return slurm_jobs;
+  return server ? *server : local_processes;
+}
+
+StartedDesign start_design(Home& home, const storage::User& user, const DesignLaunch& launch, DesignBackend* server) {
+  return backend_for(project_or_active(home, user, launch.design.project), server).start(home, user, launch);
+}
+
+StoppedDesign stop_design(Home& home, const storage::User& user, const std::optional<std::string>& name,
+                          DesignBackend* server) {
+  const storage::Project project = project_or_active(home, user, name);
+  storage::Designs designs(home.workspace(), project);
+  auto latest = designs.latest();
+  if (latest) backend_for(project, server).refresh(home, project, *latest);
+  if (!latest || latest->state != storage::DesignState::running)
+    throw Conflict("no design of " + project.name + " is running");
+  StoppedDesign out = stopper_of(*latest, server).stop(home, project, *latest);
+  out.design = *designs.latest();  // a local design whose process is gone is found interrupted here
+  return out;
+}
+
+DesignStatus design_status(Home& home, const storage::User& user, bool complete,
+                           const std::optional<std::string>& project) {
+  DesignStatus status;
+  storage::Projects projects(home.workspace(), user);
+  status.project = project ? projects.get(*project) : projects.require_active();
+  status.design = storage::Designs(home.workspace(), status.project).latest();
+  if (!status.design) return status;
+  std::optional<storage::DesignProgress> on_cluster;
+  if (status.project.cluster) {
+    on_cluster = backend_for(status.project).refresh(home, status.project, *status.design);
+    status.cluster_job = storage::ClusterJobs(home.workspace(), status.project).find(status.design->id);
+  }
+  const storage::Design& d = *status.design;
+  if (on_cluster) {
+    status.progress = *on_cluster;
+    return status;
+  }
+  try {
+    if (std::filesystem::exists(storage::DesignStore::file_in(d.folder))) {
+      status.progress = storage::read_design_progress(d.folder);
+      if (complete) {
+        status.race_log = storage::read_race_log(d.folder);
+        status.convergence = storage::read_convergence(d.folder);
+      }
+    }
+  } catch (const storage::DesignFolderError&) {
+    // A design that has just started may not have committed its tables yet.
+    if (d.state != storage::DesignState::running) throw;
+  }
+  return status;
+}
+
+nlohmann::json status_document(const DesignStatus& status, bool complete) {
+  if (!status.design) return {{"project", status.project.name}, {"design", nullptr}};
+  nlohmann::json out{{"project", status.project.name},
+                     {"design", design_row_document(*status.design)},
+                     {"progress", stored_progress_document(status.progress)}};
+  if (status.cluster_job) out["cluster_job"] = cluster_job_document(*status.cluster_job);
+  if (complete) {
+    out["race_log"] = race_log_document(status.race_log);
+    out["convergence"] = convergence_document(status.convergence);
+  }
+  return out;
+}
+
+}  // namespace sd::app

@@ -1,0 +1,45 @@
+#pragma once
+// The one place that chooses a design's backend (design_backend.hpp): where a project's new
+// designs run, which backend can stop a running one (that of its owner, whoever started it),
+// and which brings it up to date for `status`.
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/design_backend.hpp"
+
+namespace sd::app {
+
+/// Where the project's new designs run: Slurm for a cluster project; else the server's
+/// threads when a server asks (`server`), this process otherwise. The one such choice.
+DesignBackend& backend_for(const storage::Project& project, DesignBackend* server = nullptr);
+
+/// Starts (or resumes) the active (or launch.design.project's) project's design on its backend.
+StartedDesign start_design(Home& home, const storage::User& user, const DesignLaunch& launch,
+                           DesignBackend* server = nullptr);
+
+/// Stops the active (or named) project's running design through the backend of its owner:
+/// scancel for a Slurm job, SIGTERM to a local process, the cancel token of a server's own
+/// thread. Conflict when no design runs, or its owner is out of reach (another server's thread,
+/// another machine). Reaching a design means owning its project: the user's projects only.
+StoppedDesign stop_design(Home& home, const storage::User& user, const std::optional<std::string>& project = std::nullopt,
+                          DesignBackend* server = nullptr);
+
+/// A project's current or last design with what its design.db says: the named project, or the
+/// active one (`status`). A running design is first brought up to date by its backend (a
+/// cluster project's with Slurm, its progress read on the cluster).
+struct DesignStatus {
+  storage::Project project;
+  std::optional<storage::Design> design;
+  storage::DesignProgress progress;
+  std::vector<storage::RaceRecord> race_log;  // with `complete`
+  std::vector<storage::ConvergencePoint> convergence;  // with `complete`: the best elite per iteration
+  std::optional<storage::ClusterJob> cluster_job;  // a cluster project's design: its Slurm job
+};
+DesignStatus design_status(Home& home, const storage::User& user, bool complete,
+                           const std::optional<std::string>& project = std::nullopt);
+nlohmann::json status_document(const DesignStatus& status, bool complete);
+
+}  // namespace sd::app
