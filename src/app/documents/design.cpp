@@ -1,0 +1,109 @@
+#include "app/documents/design.hpp"
+
+#include "storage/clock.hpp"
+
+namespace sd::app {
+
+using nlohmann::json;
+
+namespace {
+json elite_document(const EliteReport& e) {
+  return {{"id", e.id}, {"configuration", e.configuration}, {"mean_score", e.mean_score}, {"evaluations", e.evaluations}};
+}
+
+json configuration_score(const storage::ConfigurationScore& c) {
+  return {{"id", c.id}, {"configuration", c.command_line}, {"mean_score", c.mean_score}, {"runs", c.runs}};
+}
+}  // namespace
+
+
+json design_report_document(const DesignReport& r) {
+  json elites = json::array();
+  for (const auto& e : r.elites) elites.push_back(elite_document(e));
+  const double overhead = r.wall_seconds > 0 ? (r.wall_seconds - r.evaluation_seconds) / r.wall_seconds : 0.0;
+  return {{"folder", r.folder.string()},
+          {"mission", r.mission},
+          {"direction", r.direction},
+          {"budget", r.budget},
+          {"seed", r.seed},
+          {"architectures", r.architectures},
+          {"flavours", r.flavours},
+          {"resumed", r.resumed},
+          {"experiments_used", r.experiments_used},
+          {"iterations", r.iterations},
+          {"finish_reason", r.finish_reason},
+          {"best", elites.empty() ? json() : elites.front()},
+          {"elites", elites},
+          {"timing",
+           {{"wall_s", r.wall_seconds}, {"evaluation_s", r.evaluation_seconds}, {"optimiser_overhead", overhead},
+            {"threads", r.threads}}}};
+}
+
+json progress_document(const design::Progress& p, bool maximise) {
+  json out{{"iteration", p.iteration},   {"total_iterations", p.nb_iterations},
+           {"experiments_used", p.experiments_used}, {"budget", p.budget},
+           {"alive", p.alive},           {"race_configurations", p.race_configurations},
+           {"instances", p.task}};
+  if (p.best_id > 0) out["best"] = {{"id", p.best_id}, {"mean_score", maximise ? -p.best_mean : p.best_mean}};
+  return out;
+}
+
+json stored_progress_document(const storage::DesignProgress& p) {
+  json out{{"started", p.started},
+           {"phase", p.phase},
+           {"iteration", p.iteration},
+           {"total_iterations", p.nb_iterations},
+           {"experiments_used", p.experiments_used},
+           {"remaining_budget", p.budget - p.experiments_used},
+           {"race_budget", p.race_budget},
+           {"race_configurations", p.race_configurations},
+           {"configurations_sampled", p.configurations_sampled},
+           {"best", p.best ? configuration_score(*p.best) : json()}};
+  json elites = json::array();  // each over all its runs, as "best" (the race log's means are per race)
+  for (const auto& e : p.elites) elites.push_back(configuration_score(e));
+  out["elites"] = elites;
+  if (!p.finish_reason.empty()) out["finish_reason"] = p.finish_reason;
+  return out;
+}
+
+json race_log_document(const std::vector<storage::RaceRecord>& log) {
+  json races = json::array();
+  for (const auto& r : log) {
+    json instances = json::array(), members = json::array();
+    for (const auto& [position, seed] : r.instances) instances.push_back({{"position", position}, {"seed", seed}});
+    for (const auto& m : r.members) {
+      json member = configuration_score(m.configuration);
+      member["elite"] = m.elite;
+      member["eliminated_after"] = m.eliminated_after ? json(*m.eliminated_after) : json();
+      members.push_back(std::move(member));
+    }
+    races.push_back({{"iteration", r.iteration}, {"race_budget", r.race_budget}, {"instances", instances},
+                     {"configurations", members}, {"elites", r.elites}});
+  }
+  return races;
+}
+
+json convergence_document(const std::vector<storage::ConvergencePoint>& points) {
+  json out = json::array();
+  for (const auto& p : points)
+    out.push_back({{"iteration", p.iteration}, {"runs_used", p.runs_used}, {"best_id", p.best_id}, {"best_score", p.best_score}});
+  return out;
+}
+
+json design_row_document(const storage::Design& d) {
+  return {{"id", d.id},
+          {"state", storage::to_string(d.state)},
+          {"pid", d.pid},
+          {"owner", d.owner},
+          {"folder", d.folder.string()},
+          {"mission", d.mission},
+          {"budget", d.budget},
+          {"seed", d.seed},
+          {"architectures", d.architectures},
+          {"flavours", d.flavours},
+          {"created", storage::format_time(d.created_at)},
+          {"best_configuration", d.best_config ? json(*d.best_config) : json()},
+          {"best_score", d.best_score ? json(*d.best_score) : json()}};
+}
+
+}  // namespace sd::app
