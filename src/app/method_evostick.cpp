@@ -72,6 +72,8 @@ class EvoStick final : public DesignMethod {
   }
 
   std::vector<storage::ConvergencePoint> convergence(const std::filesystem::path& folder) const override {
+    // Designs made before the document was kept in the folder have no curve, not a broken report.
+    if (!std::filesystem::exists(folder / kDocumentFile)) return {};
     const nlohmann::json doc = document(folder);
     const auto& history = doc.at("history");
     if (history.empty()) return {};
