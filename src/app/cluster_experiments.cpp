@@ -2,6 +2,7 @@
 
 #include <map>
 
+#include "app/design_method.hpp"
 #include "app/errors.hpp"
 #include "app/projects.hpp"
 #include "cluster/slurm.hpp"
@@ -51,9 +52,11 @@ ClusterExperimentSubmission submit_cluster_experiment(Home& home, const storage:
                                                       const std::optional<std::string>& name, unsigned threads) {
   check_request(given);
   for (const auto& d : plan.designs)
-    if (d.method != "automode")
-      throw InvalidRequest("condition " + d.condition + " uses EvoStick, which runs on this machine only; run this "
-                           "experiment in a local project, or leave EvoStick out");
+    if (const DesignMethod& method = design_method(d.method); !method.runs_on_cluster()) {
+      const std::string title(method.info().title);
+      throw InvalidRequest("condition " + d.condition + " uses " + title + ", which runs on this machine only; run this "
+                           "experiment in a local project, or leave " + title + " out");
+    }
   ClusterExperimentSubmission out;
   out.project = project_or_active(home, user, name);
   if (!out.project.cluster) throw std::logic_error("submit_cluster_experiment on a local project");

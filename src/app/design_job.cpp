@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "app/design_db_checkpoints.hpp"
 #include "app/errors.hpp"
 #include "app/inputs.hpp"
 #include "app/user_files.hpp"
@@ -98,7 +99,7 @@ PreparedDesign prepare_resume(const std::filesystem::path& folder, bool allow_fi
     throw DesignFolderError("the design in " + d.folder.string() +
                             " was made with another design space or other optimiser settings than this swarmdesign has; "
                             "it cannot be resumed by this version");
-  d.restored = store.load_state();
+  d.restored = DesignDbCheckpoints(store, *d.space).load();
   if (d.restored && d.restored->phase == design::Phase::Finished && !allow_finished)
     throw DesignFolderError("the design in " + d.folder.string() + " has already finished; nothing to resume");
   return d;
@@ -115,6 +116,7 @@ DesignOutcome run_design(PreparedDesign& d, const DesignRunOptions& options) {
                              d.options.seed, design::fingerprint(*d.space, d.options), d.mission.digest, kResultsVersion};
     return storage::DesignStore::create(d.folder, meta);
   }();
+  DesignDbCheckpoints checkpoints(store, *d.space);
 
   std::unique_ptr<Evaluator> own;
   Evaluator& evaluator = options.evaluator ? *options.evaluator : *(own = make_evaluator(static_cast<int>(options.threads)));
@@ -132,8 +134,8 @@ DesignOutcome run_design(PreparedDesign& d, const DesignRunOptions& options) {
   });
   race.on_checkpoint([&](const design::Checkpoint& c) {
     const auto dropped = eliminations.take();
-    store.save(c, dropped, *d.space);
-    if (options.observer) options.observer->checkpoint(store.step());
+    checkpoints.save(c, dropped);
+    if (options.observer) options.observer->checkpoint(checkpoints.step());
   });
 
   DesignOutcome outcome;

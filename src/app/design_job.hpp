@@ -10,7 +10,6 @@
 //
 // prepare_* check everything (mission, flags, minimum budget, the folder) without side
 // effects, so a caller can refuse bad input before it records or forks anything.
-#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -18,11 +17,12 @@
 #include <string>
 #include <vector>
 
+#include "app/cancel_token.hpp"
+#include "app/user_files.hpp"
 #include "control/control_software.hpp"
 #include "design/design_space.hpp"
 #include "design/iterated_race.hpp"
 #include "evaluation/evaluator.hpp"
-#include "app/user_files.hpp"
 #include "missions/mission.hpp"
 
 namespace sd::app {
@@ -93,21 +93,11 @@ class DesignObserver {
   virtual void checkpoint(std::int64_t /*step*/) {}
 };
 
-/// Set from any thread; the design stops after the race step it is in, its state saved.
-class CancelToken {
- public:
-  void cancel() { cancelled_.store(true); }
-  bool cancelled() const { return cancelled_.load(); }
-
- private:
-  std::atomic<bool> cancelled_{false};
-};
-
 struct DesignRunOptions {
   unsigned threads = 0;               // local threads when no evaluator is given (0: all cores)
   Evaluator* evaluator = nullptr;     // another backend (MPI ranks, ...); else threads
   DesignObserver* observer = nullptr;
-  const CancelToken* cancel = nullptr;
+  const CancelToken* cancel = nullptr;  // the design stops after the race step it is in, its state saved
 };
 
 struct DesignOutcome {

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "app/documents/evolution.hpp"
 #include "app/errors.hpp"
 #include "app/inputs.hpp"
 #include "app/user_files.hpp"
@@ -41,6 +42,11 @@ struct Persistence {
   const evostick::Checkpoint* from() const { return resume ? &*resume : nullptr; }
 };
 
+evostick::StopRequest stop_of(const EvolutionRun& run) {
+  if (!run.cancel) return {};
+  return [token = run.cancel] { return token->cancelled(); };
+}
+
 void write_output(const std::string& path, const std::string& text) {
   if (path.empty()) return;
   std::ofstream out(path);
@@ -60,8 +66,10 @@ EvolutionOutcome run_module(const std::string& name, const evostick::Settings& s
   if (!module)
     throw InvalidRequest("unknown module '" + name + "' (one of " + evostick::module_names_text() + ")");
   EvolutionOutcome out;
-  out.result = evostick::train_module(*module, settings, run.threads, progress_of(run, settings), keep.from(), keep.sink());
+  out.result = evostick::train_module(*module, settings, run.threads, progress_of(run, settings), keep.from(), keep.sink(),
+                                      stop_of(run));
   out.settings = settings;
+  if ((out.cancelled = out.result.stopped)) return out;
   out.module = name;
   out.measure = evostick::measure_name(module->measure);
   out.control_software = network_config(out.result.best);
@@ -76,20 +84,11 @@ EvolutionOutcome run_mission(const Mission& mission, const evostick::Settings& s
   Evaluator& evaluator = *backend;
   EvolutionOutcome out;
   out.result = evostick::evolve(mission, mission.objective.direction, evaluator, settings, progress_of(run, settings),
-                                keep.from(), keep.sink());
+                                keep.from(), keep.sink(), stop_of(run));
   out.settings = settings;
+  if ((out.cancelled = out.result.stopped)) return out;
   out.control_software = network_config(out.result.best);
-  nlohmann::json doc{{"mission", mission.name},
-                     {"direction", direction_name(mission.objective.direction)},
-                     {"settings", evostick::settings_json(settings)},
-                     {"runs", out.result.runs},
-                     {"control_software", out.control_software},
-                     {"mean", out.result.best_mean},
-                     {"weights_digest", evostick::digest_text(evostick::weight_digest(out.result.best))},
-                     {"history", evostick::history_json(out.result.history)},
-                     {"weights", evostick::weights_json(out.result.best)}};
-  if (budget > 0) doc["budget"] = budget;
-  out.document = evostick::document_text(doc);
+  out.document = evostick::document_text(mission_evolution_document(mission, settings, out.result, out.control_software, budget));
   write_output(output, out.document);
   return out;
 }

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "app/cancel_token.hpp"
 #include "evostick/evolution.hpp"
 
 namespace sd::app {
@@ -26,6 +27,9 @@ struct EvolutionRun {
   std::function<void(const evostick::GenerationRecord&, int generations)> progress;
   /// After the state file holds checkpoint `generation` (only when the state is kept).
   std::function<void(int generation)> saved;
+  /// Stops the evolution after the generation it is in, once its state is saved (resumable
+  /// when the state is kept).
+  const CancelToken* cancel = nullptr;
 };
 
 struct EvolutionOutcome {
@@ -35,6 +39,7 @@ struct EvolutionOutcome {
   std::string measure;           // its training measure
   std::string control_software;  // the best network as --nn-config ...
   std::string document;          // the JSON document (module: data/arlequin's format)
+  bool cancelled = false;        // stopped by the token: only `settings` is set
 };
 
 EvolutionOutcome start_evolution(const EvolutionRequest& request, const EvolutionRun& run);

@@ -6,9 +6,9 @@
 #include <numeric>
 
 #include "app/cluster_experiments.hpp"
+#include "app/design_method.hpp"
 #include "app/errors.hpp"
 #include "app/evaluation_job.hpp"
-#include "app/evolution_job.hpp"
 #include "app/inputs.hpp"
 #include "app/user_files.hpp"
 #include "app/lease_keeper.hpp"
@@ -16,10 +16,8 @@
 #include "control/config_string.hpp"
 #include "core/fnv.hpp"
 #include "core/rng.hpp"
-#include "design/sampling.hpp"
 #include "missions/catalogue.hpp"
 #include "statistics/descriptive.hpp"
-#include "storage/design_store.hpp"
 
 namespace sd::app {
 
@@ -41,39 +39,17 @@ std::uint64_t design_seed(const experiments::Protocol& protocol, const std::stri
   return h.value() % 2'000'000'000ULL + 1;  // a seed as people type them
 }
 
-/// The EvoStick settings a budget buys: whole generations of the default population.
-evostick::Settings evostick_settings(std::int64_t budget, std::uint64_t seed) {
-  evostick::Settings settings;
-  settings.generations = static_cast<int>(std::max<std::int64_t>(1, budget / settings.runs_per_generation()));
-  settings.seed = seed;
-  return settings;
-}
-
 std::string where(const experiments::MissionPlan& m, const experiments::Condition& c) {
   return "mission " + m.mission + ", condition " + c.name;
 }
 
-/// The space of an automode condition and the smallest budget its optimiser accepts.
-std::pair<design::DesignSpaceChoice, long long> condition_space(const experiments::MissionPlan& m,
-                                                                 const experiments::Condition& c) {
-  try {
-    const auto choice = resolve_space(design::request_from_names(c.architectures, c.flavours));
-    return {choice, minimum_design_budget(design::build_design_space(choice))};
-  } catch (const std::exception& e) {
-    throw InvalidRequest(where(m, c) + ": " + e.what());
-  }
-}
-
-/// Shows a design's race steps to the experiment's observer (its convergence is read from its
-/// own design.db when reported).
-class DesignWatcher final : public DesignObserver {
+/// Shows a design's progress to the experiment's observer.
+class DesignWatcher final : public MethodObserver {
  public:
-  DesignWatcher(const storage::ExperimentDesign& design, bool maximise, ExperimentObserver* observer)
-      : design_(design), maximise_(maximise), observer_(observer) {}
-
-  void progress(const design::Progress& p) override {
-    if (p.best_id == 0 || !observer_) return;  // a race that has not scored anyone yet
-    observer_->design_progress(p.experiments_used, design_.plan.budget, maximise_ ? -p.best_mean : p.best_mean);
+  DesignWatcher(const storage::ExperimentDesign& design, ExperimentObserver* observer)
+      : design_(design), observer_(observer) {}
+  void progress(std::int64_t runs_used, double best_score) override {
+    if (observer_) observer_->design_progress(runs_used, design_.plan.budget, best_score);
   }
   void checkpoint(std::int64_t step) override {
     if (observer_) observer_->checkpoint(step);
@@ -81,55 +57,18 @@ class DesignWatcher final : public DesignObserver {
 
  private:
   const storage::ExperimentDesign& design_;
-  bool maximise_;
   ExperimentObserver* observer_;
 };
 
-/// Makes one AutoMoDe design (or resumes it from its folder); false when cancelled.
-bool make_automode_design(storage::Experiments& store, const storage::ExperimentDesign& d,
-                          const ExperimentRunOptions& options) {
-  PreparedDesign prepared =
-      std::filesystem::exists(storage::DesignStore::file_in(d.folder))
-          ? prepare_resume(d.folder, true)
-          : prepare_new_design({d.plan.mission, d.plan.budget,
-                                design::request_from_text(d.plan.architectures, d.plan.flavours), d.plan.seed},
-                               d.folder);
-  DesignWatcher watcher(d, prepared.mission.objective.direction == Direction::Maximize, options.observer);
-  const DesignOutcome outcome =
-      run_design(prepared, {.threads = options.threads, .evaluator = options.evaluator, .observer = &watcher,
-                            .cancel = options.cancel});
-  if (outcome.cancelled) return false;
-  const EliteReport& best = outcome.report->elites.front();
-  store.design_finished(d.id, best.configuration, best.mean_score, outcome.experiments_used);
+/// Makes one design with its method (or resumes it from its folder); false when cancelled.
+bool make_design(storage::Experiments& store, const storage::ExperimentDesign& d, const ExperimentRunOptions& options) {
+  DesignWatcher watcher(d, options.observer);
+  const std::optional<MadeDesign> made = design_method(d.plan.method).run(
+      d.plan, d.folder,
+      {.threads = options.threads, .evaluator = options.evaluator, .observer = &watcher, .cancel = options.cancel});
+  if (!made) return false;
+  store.design_finished(d.id, made->control_software, made->design_score, made->runs_used);
   return true;
-}
-
-/// Evolves the EvoStick baseline's network (or resumes the evolution kept in its folder).
-void make_evostick_design(storage::Experiments& store, const storage::ExperimentDesign& d,
-                          const ExperimentRunOptions& options) {
-  const auto state = d.folder / "evolution.json";
-  std::filesystem::create_directories(d.folder);
-  EvolutionRun run;
-  run.threads = static_cast<int>(options.threads);
-  const std::int64_t per_generation = evostick_settings(d.plan.budget, d.plan.seed).runs_per_generation();
-  run.progress = [&](const evostick::GenerationRecord& g, int) {
-    store.record_progress(d.id, g.generation * per_generation, g.best_mean);
-    if (options.observer) options.observer->design_progress(g.generation * per_generation, d.plan.budget, g.best_mean);
-  };
-  run.saved = [&](int generation) {
-    if (options.observer) options.observer->checkpoint(generation);
-  };
-  EvolutionOutcome outcome;
-  if (std::filesystem::exists(state)) {
-    outcome = resume_evolution(state.string(), run);
-  } else {
-    EvolutionRequest request;
-    request.mission = d.plan.mission;
-    request.settings = evostick_settings(d.plan.budget, d.plan.seed);
-    request.state = state.string();
-    outcome = start_evolution(request, run);
-  }
-  store.design_finished(d.id, outcome.control_software, outcome.result.best_mean, outcome.result.runs);
 }
 
 }  // namespace
@@ -165,23 +104,10 @@ PlannedExperiment plan_experiment(const experiments::Protocol& protocol) {
     const std::string mission = mission_reference(m.mission);
     for (const auto& c : m.conditions) {
       storage::PlannedDesign d{mission, c.name, 1, c.method, "", "", experiments::scaled_budget(protocol, m), 0};
-      if (c.method == "evostick") {
-        const auto settings = evostick_settings(d.budget, 0);
-        const std::int64_t runs = settings.runs();
-        if (runs != d.budget)
-          plan.notes.push_back(where(m, c) + ": EvoStick evolves whole generations of " +
-                               std::to_string(settings.runs_per_generation()) + " runs: budget " + std::to_string(d.budget) +
-                               " becomes " + std::to_string(runs));
-        d.budget = runs;
-      } else {
-        const auto [choice, minimum] = condition_space(m, c);
-        d.architectures = choice.architectures_text();
-        d.flavours = choice.flavours_text();
-        if (d.budget < minimum) {
-          plan.notes.push_back(where(m, c) + ": budget " + std::to_string(d.budget) +
-                               " is below the optimiser's minimum for this space; it runs with " + std::to_string(minimum));
-          d.budget = minimum;
-        }
+      try {
+        if (const auto note = design_method(c.method).plan(d, c)) plan.notes.push_back(where(m, c) + ": " + *note);
+      } catch (const std::exception& e) {
+        throw InvalidRequest(where(m, c) + ": " + e.what());
       }
       for (int r = 1; r <= protocol.designs; ++r) {
         d.replicate = r;
@@ -205,17 +131,17 @@ DurationEstimate estimate_duration(const PlannedExperiment& plan, unsigned threa
   for (const auto& m : plan.protocol.missions) {
     const std::string reference = mission_reference(m.mission);
     const Mission mission = load_mission(reference);
-    // Control software as the optimiser first meets it: sampled uniformly from each condition's
-    // space (EvoStick's network costs about as much as one Arlequin module).
+    // Control software as each condition's method first meets it.
     std::vector<ControlSoftware> samples;
     Rng rng(7);
     for (const auto& c : m.conditions) {
-      if (c.method == "evostick") {
-        samples.push_back(parse_control_software("--fsm-config --nstates 1 --s0 50"));
-        continue;
+      std::vector<ControlSoftware> first;
+      try {
+        first = design_method(c.method).samples(c, rng);
+      } catch (const std::exception& e) {
+        throw InvalidRequest(where(m, c) + ": " + e.what());
       }
-      const auto space = design::build_design_space(condition_space(m, c).first);
-      for (int i = 0; i < 4; ++i) samples.push_back(parse_control_software(space.render(design::sample_uniform(space, rng))));
+      samples.insert(samples.end(), first.begin(), first.end());
     }
     const std::vector<std::uint64_t> seeds = {1, 2};
     const auto start = Clock::now();
@@ -274,9 +200,7 @@ ExperimentOutcome run_experiment(StartedExperiment& e, const ExperimentRunOption
           // Runs are deterministic: the same design made again would end the same.
           store.reuse(d.id, twin->first);
           if (options.observer) options.observer->design_reused(twin->first, twin->second);
-        } else if (d.plan.method == "evostick") {
-          make_evostick_design(store, d, options);
-        } else if (!make_automode_design(store, d, options)) {
+        } else if (!make_design(store, d, options)) {
           store.add_wall_seconds(d.id, seconds_since(design_start));
           lease.stop();
           store.release(e.experiment.id, e.experiment.owner);
@@ -326,21 +250,4 @@ std::vector<ExperimentProgress> experiments_progress(Home& home, const storage::
   }
   return all;
 }
-
-nlohmann::json experiments_document(const std::vector<ExperimentProgress>& experiments) {
-  nlohmann::json list = nlohmann::json::array();
-  for (const auto& e : experiments) {
-    nlohmann::json item{{"name", e.experiment.name},
-                        {"state", storage::to_string(e.experiment.state)},
-                        {"designs", e.designs},
-                        {"designs_done", e.designs_done}};
-    if (e.current)
-      item["current"] = {{"mission", mission_label(e.current->plan.mission)},     {"condition", e.current->plan.condition},
-                         {"replicate", e.current->plan.replicate}, {"stage", storage::to_string(e.current->stage)},
-                         {"budget", e.current->plan.budget},       {"folder", e.current->folder.string()}};
-    list.push_back(std::move(item));
-  }
-  return list;
-}
-
 }  // namespace sd::app

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "app/design_job.hpp"
+#include "app/documents/experiments.hpp"
 #include "app/home.hpp"
 #include "experiments/protocol.hpp"
 #include "storage/experiments.hpp"
@@ -124,6 +125,5 @@ struct ExperimentProgress {
 };
 std::vector<ExperimentProgress> experiments_progress(Home& home, const storage::User& user,
                                                      const std::optional<std::string>& project = std::nullopt);
-nlohmann::json experiments_document(const std::vector<ExperimentProgress>& experiments);
 
 }  // namespace sd::app

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "app/control_software_document.hpp"
+#include "app/design_method.hpp"
 #include "app/errors.hpp"
 #include "app/experiment_job.hpp"
 #include "control/config_string.hpp"
@@ -107,14 +108,10 @@ json design_document(const storage::ExperimentDesign& d, const std::string& miss
     seeds.push_back(seed);
     scores.push_back(score);
   }
+  // The design's own record in its folder, whatever its method; a reused design's is its twin's.
   json convergence = json::array();
-  if (d.plan.method == "evostick") {
-    for (const auto& [runs, best] : store.progress(d.id)) convergence.push_back({runs, best});
-  } else {
-    // The race's own record, at the end of every iteration; a reused design's is its twin's.
-    const auto folder = d.reused_from ? store.design(*d.reused_from).folder : d.folder;
-    for (const auto& p : storage::read_convergence(folder)) convergence.push_back({p.runs_used, p.best_score});
-  }
+  const auto folder = d.reused_from ? store.design(*d.reused_from).folder : d.folder;
+  for (const auto& p : design_method(d.plan.method).convergence(folder)) convergence.push_back({p.runs_used, p.best_score});
   return {{"id", d.id},
           {"mission", mission},
           {"condition", d.plan.condition},

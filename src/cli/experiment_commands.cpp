@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "app/accounts.hpp"
+#include "app/design_method.hpp"
 #include "app/experiment_job.hpp"
 #include "app/cluster_experiments.hpp"
 #include "app/experiment_report.hpp"
@@ -69,26 +70,10 @@ void print_plan(const app::PlannedExperiment& plan) {
   for (const auto& d : plan.designs)
     if (d.replicate == 1)
       std::cout << "  " << app::mission_label(d.mission) << " / " << d.condition << ": "
-                << (d.method == "evostick" ? std::string("EvoStick") : d.architectures + " / " + d.flavours) << ", budget "
+                << app::design_method(d.method).describe(d) << ", budget "
                 << d.budget << "\n";
   std::cout << "  " << plan.designs.size() << " designs: " << plan.design_runs << " design runs and "
             << plan.assessment_runs << " assessment runs\n";
-}
-
-nlohmann::json plan_document(const app::PlannedExperiment& plan, const app::DurationEstimate* estimate) {
-  nlohmann::json designs = nlohmann::json::array();
-  for (const auto& d : plan.designs)
-    designs.push_back({{"mission", d.mission}, {"condition", d.condition}, {"replicate", d.replicate}, {"method", d.method},
-                       {"architectures", d.architectures}, {"flavours", d.flavours}, {"budget", d.budget}, {"seed", d.seed}});
-  nlohmann::json doc{{"protocol", experiments::to_json(plan.protocol)}, {"designs", designs}, {"notes", plan.notes},
-                     {"design_runs", plan.design_runs}, {"assessment_runs", plan.assessment_runs}};
-  if (estimate) {
-    nlohmann::json missions = nlohmann::json::array();
-    for (const auto& m : estimate->missions)
-      missions.push_back({{"mission", m.mission}, {"runs", m.runs}, {"seconds_per_run", m.seconds_per_run}});
-    doc["estimate"] = {{"threads", estimate->threads}, {"seconds", estimate->seconds}, {"missions", missions}};
-  }
-  return doc;
 }
 
 /// What a running experiment shows: one live line for the design being made, one printed line
@@ -167,7 +152,7 @@ void run_experiment_command(const ExperimentOptions& o) {
   if (o.dry_run) {
     const app::DurationEstimate estimate = app::estimate_duration(plan, o.threads);
     if (o.json) {
-      std::cout << plan_document(plan, &estimate).dump(2) << "\n";
+      std::cout << app::plan_document(plan, &estimate).dump(2) << "\n";
       return;
     }
     print_plan(plan);

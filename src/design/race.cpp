@@ -4,10 +4,13 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
+#include <span>
 #include <set>
 #include <unordered_set>
 #include <stdexcept>
 
+#include "design/batch_plan.hpp"
 #include "design/race_test.hpp"
 
 namespace sd::design {
@@ -115,113 +118,60 @@ RaceState start_race(const RaceSettings& settings, std::vector<int> config_ids, 
   return s;
 }
 
-/// How many instances ahead of the current one a batch may reach for: enough to fill idle
-/// workers on a race's narrowest steps, few enough that little is wasted when the race ends.
-constexpr std::size_t kMaxInstancesAhead = 8;
+namespace {
 
-std::size_t race_step(RaceState& s, const RaceSettings& settings, RaceEnvironment& env) {
-  if (s.finished) return 0;
-  const std::size_t k = s.next_task;
-  if (k > s.n_tasks) {
-    finish(s, "all instances (" + std::to_string(s.n_tasks) + ") evaluated");
-    return 0;
-  }
-  const std::size_t ncols = s.config_ids.size();
-  std::vector<std::size_t> which_exe = alive_columns(s);
-  if (settings.elitist && any_elite(s)) {
-    // Elites do not rerun instances they have already seen.
-    std::erase_if(which_exe, [&](std::size_t c) { return !std::isnan(s.results[k - 1][c]); });
-    if (which_exe.empty()) {
-      for (int& e : s.is_elite)
-        if (e > 0) --e;
-      ++s.next_task;
-      return 0;
-    }
-  }
+/// Why the race stops before task k, or nothing (irace's stop rules, checked before a step's
+/// runs): too few survivors, the budget of the next test, tests without elimination. An
+/// elitist race never stops before every old instance has a result of a survivor.
+std::optional<std::string> stop_reason(const RaceState& s, const RaceSettings& settings, std::size_t k,
+                                       std::size_t runs_needed) {
   const auto first_test = static_cast<std::size_t>(settings.first_test);
   const auto each_test = static_cast<std::size_t>(settings.each_test);
   if (k > first_test) {
-    if (static_cast<long long>(s.nb_alive()) <= settings.min_survival && all_old_instances_evaluated(s, settings)) {
-      finish(s, "number of alive configurations (" + std::to_string(s.nb_alive()) +
-                    ") <= minimum number of configurations (" + std::to_string(settings.min_survival) + ")");
-      return 0;
-    }
-    const long long next_test_cost = s.experiments_used + static_cast<long long>(which_exe.size() * each_test);
+    if (static_cast<long long>(s.nb_alive()) <= settings.min_survival && all_old_instances_evaluated(s, settings))
+      return "number of alive configurations (" + std::to_string(s.nb_alive()) +
+             ") <= minimum number of configurations (" + std::to_string(settings.min_survival) + ")";
+    const long long next_test_cost = s.experiments_used + static_cast<long long>(runs_needed * each_test);
     if (settings.max_experiments > 0 && (k - 1) % each_test == 0 && next_test_cost > settings.max_experiments &&
-        all_old_instances_evaluated(s, settings)) {
-      finish(s, "experiments for next test (" + std::to_string(next_test_cost) + ") > max experiments (" +
-                    std::to_string(settings.max_experiments) + ")");
-      return 0;
-    }
+        all_old_instances_evaluated(s, settings))
+      return "experiments for next test (" + std::to_string(next_test_cost) + ") > max experiments (" +
+             std::to_string(settings.max_experiments) + ")";
   }
   if (settings.elitist && settings.elitist_limit != 0 && s.no_elimination >= settings.elitist_limit &&
-      all_old_instances_evaluated(s, settings)) {
-    finish(s, "tests without elimination (" + std::to_string(s.no_elimination) + ") >= elitistLimit (" +
-                  std::to_string(settings.elitist_limit) + ")");
-    return 0;
-  }
-  while (s.results.size() < k) s.results.emplace_back(ncols, std::nan(""));
+      all_old_instances_evaluated(s, settings))
+    return "tests without elimination (" + std::to_string(s.no_elimination) + ") >= elitistLimit (" +
+           std::to_string(settings.elitist_limit) + ")";
+  return std::nullopt;
+}
 
-  // Run the batch: every alive configuration lacking a result on this instance, and runs of
-  // the same configurations on the next instances, evaluated ahead:
-  // - before the first test, every instance up to it: nothing can be eliminated before then,
-  //   so those runs would be asked for anyway;
-  // - after it, while the batch is narrower than the runner's workers (a race's late steps are
-  //   as narrow as its few survivors): a run of a configuration eliminated before its step is
-  //   wasted, but on a worker that would have idled.
-  // Their costs wait in s.ahead until their step takes them; runs are deterministic, so the
-  // race, its results and their order are the same as step by step, whatever the workers.
+/// Stores task k's costs, in column order, and passes them on to env.record.
+void record_results(RaceState& s, RaceEnvironment& env, std::span<const std::size_t> columns,
+                    std::span<const double> costs, std::size_t k) {
   const std::size_t position = s.position_of(k);
-  std::vector<double> costs(which_exe.size(), std::nan(""));
-  std::vector<Experiment> batch;
-  std::vector<std::size_t> now;  // which_exe index of each of this step's experiments in batch
-  const auto experiment = [&](std::size_t c, std::size_t at) {
-    const int id = s.config_ids[c];
-    const InstancePosition& inst = env.instances.at(at);
-    return Experiment{id, &env.store[id].config, inst.instance, inst.seed, at};
-  };
-  for (std::size_t e = 0; e < which_exe.size(); ++e) {
-    if (const auto it = s.ahead.find({position, s.config_ids[which_exe[e]]}); it != s.ahead.end()) {
-      costs[e] = it->second;
-      s.ahead.erase(it);
-      continue;
-    }
-    batch.push_back(experiment(which_exe[e], position));
-    now.push_back(e);
-  }
-  const std::size_t workers = env.runner.parallelism();
-  if (!batch.empty())
-    for (std::size_t later = k + 1; later <= s.n_tasks && later <= k + kMaxInstancesAhead; ++later) {
-      if (later > first_test && batch.size() >= workers) break;
-      const std::size_t at = s.position_of(later);
-      if (at > env.instances.size()) break;
-      for (std::size_t c : which_exe) {
-        const bool known = later <= s.results.size() && !std::isnan(s.results[later - 1][c]);  // an elite's
-        if (!known && !s.ahead.count({at, s.config_ids[c]})) batch.push_back(experiment(c, at));
-      }
-    }
-  std::vector<double> run(batch.size(), std::nan(""));
-  if (!batch.empty()) env.runner.run(batch, run);
-  for (std::size_t i = 0; i < batch.size(); ++i) {
-    if (i < now.size()) costs[now[i]] = run[i];
-    else s.ahead[{batch[i].position, batch[i].configuration_id}] = run[i];
-  }
-  for (std::size_t e = 0; e < which_exe.size(); ++e) {
-    const int id = s.config_ids[which_exe[e]];
+  for (std::size_t e = 0; e < columns.size(); ++e) {
+    const int id = s.config_ids[columns[e]];
     if (std::isnan(costs[e]))
       throw std::runtime_error("the cost of configuration " + std::to_string(id) + " is not a number");
-    s.results[k - 1][which_exe[e]] = costs[e];
+    s.results[k - 1][columns[e]] = costs[e];
     if (env.record) env.record(position, id, costs[e]);
   }
-  s.experiments_used += static_cast<long long>(which_exe.size());
+  s.experiments_used += static_cast<long long>(columns.size());
+}
 
+/// Who is eliminated after task k (irace's step after the runs): Inf costs at once, then the
+/// statistical test on the first k tasks; elites stay until they have seen their old
+/// instances. Updates the leader and the count of tests without elimination.
+void eliminate(RaceState& s, const RaceSettings& settings, std::span<const std::size_t> ran, std::size_t k) {
+  const std::size_t ncols = s.config_ids.size();
+  const auto first_test = static_cast<std::size_t>(settings.first_test);
+  const auto each_test = static_cast<std::size_t>(settings.each_test);
   // Elites that already had this instance count down their protection.
   for (std::size_t c = 0; c < ncols; ++c)
-    if (s.is_elite[c] > 0 && std::find(which_exe.begin(), which_exe.end(), c) == which_exe.end()) --s.is_elite[c];
+    if (s.is_elite[c] > 0 && std::find(ran.begin(), ran.end(), c) == ran.end()) --s.is_elite[c];
 
   // Inf = immediate rejection.
   bool any_rejected = false;
-  for (std::size_t c : which_exe)
+  for (std::size_t c : ran)
     if (std::isinf(s.results[k - 1][c])) {
       s.rejected[c] = 1;
       s.is_elite[c] = 0;
@@ -255,6 +205,37 @@ std::size_t race_step(RaceState& s, const RaceSettings& settings, RaceEnvironmen
   }
   if (settings.elitist && !any_elite(s) && k > first_test && k % each_test == 0)
     s.no_elimination = s.nb_alive() == alive_before ? s.no_elimination + 1 : 0;
+}
+
+}  // namespace
+
+std::size_t race_step(RaceState& s, const RaceSettings& settings, RaceEnvironment& env) {
+  if (s.finished) return 0;
+  const std::size_t k = s.next_task;
+  if (k > s.n_tasks) {
+    finish(s, "all instances (" + std::to_string(s.n_tasks) + ") evaluated");
+    return 0;
+  }
+  // Which configurations: the alive ones; elites do not rerun instances they have already seen.
+  std::vector<std::size_t> which_exe = alive_columns(s);
+  if (settings.elitist && any_elite(s)) {
+    std::erase_if(which_exe, [&](std::size_t c) { return !std::isnan(s.results[k - 1][c]); });
+    if (which_exe.empty()) {
+      for (int& e : s.is_elite)
+        if (e > 0) --e;
+      ++s.next_task;
+      return 0;
+    }
+  }
+  if (auto reason = stop_reason(s, settings, k, which_exe.size())) {
+    finish(s, std::move(*reason));
+    return 0;
+  }
+  while (s.results.size() < k) s.results.emplace_back(s.config_ids.size(), std::nan(""));
+  BatchPlan batch = plan_batch(s, which_exe, k, static_cast<std::size_t>(settings.first_test), env);
+  run_batch(batch, s, env);
+  record_results(s, env, which_exe, batch.costs, k);
+  eliminate(s, settings, which_exe, k);
   ++s.next_task;
   return which_exe.size();
 }

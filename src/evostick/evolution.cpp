@@ -85,7 +85,7 @@ std::uint64_t weight_digest(const arlequin::Weights& weights) {
 }
 
 Result evolve(const Mission& mission, Direction direction, Evaluator& evaluator, const Settings& settings,
-              const Progress& progress, const Checkpoint* resume, const CheckpointSink& save) {
+              const Progress& progress, const Checkpoint* resume, const CheckpointSink& save, const StopRequest& stop) {
   settings.validate();
   Rng rng(settings.seed);
   std::vector<ControlSoftware> population;
@@ -151,6 +151,10 @@ Result evolve(const Mission& mission, Direction direction, Evaluator& evaluator,
     }
     population = next_generation(population, ranking, settings, rng);
     save_state(generation);
+    if (stop && stop()) {
+      result.stopped = true;
+      break;
+    }
   }
   return result;
 }

@@ -68,6 +68,7 @@ struct Result {
   double best_mean = 0.0;        // its mean score over that generation's runs
   std::vector<GenerationRecord> history;
   std::int64_t runs = 0;
+  bool stopped = false;          // stopped between generations (`best` unset): resume from the state
 };
 
 using Progress = std::function<void(const GenerationRecord&)>;
@@ -85,9 +86,12 @@ using CheckpointSink = std::function<void(const Checkpoint&)>;
 /// Evolves a network for `mission`, ranking by the scores `evaluator` returns in the given
 /// direction. `progress` is called after every generation; `save`, if set, at the start and
 /// after every generation but the last, with the state to continue from. `resume` continues
-/// an evolution from such a state (made with the same settings).
+/// an evolution from such a state (made with the same settings). `stop`, if set, is asked after
+/// every generation's state is saved: true ends the evolution there (Result::stopped).
+using StopRequest = std::function<bool()>;
 Result evolve(const Mission& mission, Direction direction, Evaluator& evaluator, const Settings& settings,
-              const Progress& progress = {}, const Checkpoint* resume = nullptr, const CheckpointSink& save = {});
+              const Progress& progress = {}, const Checkpoint* resume = nullptr, const CheckpointSink& save = {},
+              const StopRequest& stop = {});
 
 /// FNV-1a over the bit patterns of the weights: two networks have the same digest only if
 /// (barring a collision) every weight is the same double.

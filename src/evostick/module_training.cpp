@@ -62,10 +62,10 @@ void MeasureEvaluator::evaluate(const Mission& mission, std::span<const Evaluati
 }
 
 Result train_module(const ModuleTraining& module, const Settings& settings, int threads, const Progress& progress,
-                    const Checkpoint* resume, const CheckpointSink& save) {
+                    const Checkpoint* resume, const CheckpointSink& save, const StopRequest& stop) {
   const Mission mission = training_mission(module);
   MeasureEvaluator evaluator(module.measure, threads);
-  return evolve(mission, Direction::Maximize, evaluator, settings, progress, resume, save);
+  return evolve(mission, Direction::Maximize, evaluator, settings, progress, resume, save, stop);
 }
 
 }  // namespace sd::evostick

@@ -51,6 +51,6 @@ class MeasureEvaluator : public Evaluator {
 
 /// Evolves one module's network.
 Result train_module(const ModuleTraining& module, const Settings& settings, int threads, const Progress& progress = {},
-                    const Checkpoint* resume = nullptr, const CheckpointSink& save = {});
+                    const Checkpoint* resume = nullptr, const CheckpointSink& save = {}, const StopRequest& stop = {});
 
 }  // namespace sd::evostick

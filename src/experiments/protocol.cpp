@@ -31,12 +31,21 @@ constexpr ThesisMission kThesisMissions[] = {
     {"aggregation-xor", 200000, "arlequin", "fsm"},
 };
 
-Condition alone(const ThesisMission& m) { return {"alone", "automode", {m.architecture}, {m.flavour}}; }
-Condition combined() { return {"combined", "automode", kArchitectures, kAllFlavours}; }
-Condition evostick() { return {"evostick", "evostick", {}, {}}; }
+const std::string kAutoMoDe{design::kAutoMoDe.name};
+
+Condition alone(const ThesisMission& m) { return {"alone", kAutoMoDe, {m.architecture}, {m.flavour}}; }
+Condition combined() { return {"combined", kAutoMoDe, kArchitectures, kAllFlavours}; }
+Condition evostick() { return {"evostick", std::string(design::kEvoStick.name), {}, {}}; }
 
 [[noreturn]] void fail(const std::string& path, const std::string& what) {
   throw ProtocolError("protocol: " + path + ": " + what);
+}
+
+/// A condition's method; ProtocolError for a name design/methods.hpp does not have.
+const design::MethodInfo& method_of(const Condition& condition, const std::string& path) {
+  const design::MethodInfo* method = design::find_method(condition.method);
+  if (!method) fail(path, "unknown '" + condition.method + "' (" + design::method_names_text() + ")");
+  return *method;
 }
 
 void only_fields(const nlohmann::json& object, const std::string& path, std::initializer_list<std::string_view> allowed) {
@@ -99,12 +108,11 @@ Condition condition_from_json(const nlohmann::json& c, const std::string& path) 
   condition.name = text_field(c, path, "name");
   check_name(condition.name, join(path, "name"));
   if (c.contains("method")) condition.method = text_field(c, path, "method");
-  if (condition.method == "evostick") {
+  if (!method_of(condition, join(path, "method")).has_design_space) {
     if (c.contains("architectures") || c.contains("flavours"))
-      fail(path, "an evostick condition has no architectures or flavours (it evolves one neural network)");
+      fail(path, "an " + condition.method + " condition has no architectures or flavours (it searches no design space)");
     return condition;
   }
-  if (condition.method != "automode") fail(join(path, "method"), "unknown '" + condition.method + "' (automode or evostick)");
   condition.architectures = names_field(c, path, "architectures", kArchitectures);
   condition.flavours = names_field(c, path, "flavours", kAllFlavours);
   return condition;
@@ -125,7 +133,7 @@ Protocol builtin_protocol(std::string_view name, bool with_evostick) {
       plan.conditions = {alone(m), combined()};
     } else if (name == "architecture") {
       plan.budget = 200000;  // the thesis' architecture experiment: 200 000 on every mission
-      plan.conditions = {{"fsm", "automode", {"fsm"}, kAllFlavours}, {"bt", "automode", {"bt"}, kAllFlavours}};
+      plan.conditions = {{"fsm", kAutoMoDe, {"fsm"}, kAllFlavours}, {"bt", kAutoMoDe, {"bt"}, kAllFlavours}};
     } else {
       throw ProtocolError("unknown experiment '" + std::string(name) +
                           "' (validation, combination, architecture, or --file with your own protocol)");
@@ -185,7 +193,7 @@ nlohmann::json to_json(const Protocol& protocol) {
     nlohmann::json conditions = nlohmann::json::array();
     for (const auto& c : m.conditions) {
       nlohmann::json j{{"name", c.name}, {"method", c.method}};
-      if (c.method == "automode") {
+      if (method_of(c, "conditions").has_design_space) {
         j["architectures"] = c.architectures;
         j["flavours"] = c.flavours;
       }

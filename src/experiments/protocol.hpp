@@ -13,6 +13,8 @@
 #include <string_view>
 #include <vector>
 
+#include "design/methods.hpp"
+
 namespace sd::experiments {
 
 /// A malformed protocol, with the path of the field at fault ("missions[1].budget: ...").
@@ -24,9 +26,9 @@ struct ProtocolError : std::invalid_argument {
 /// condition of the experiment (its box plots, heat maps and Friedman test group them).
 struct Condition {
   std::string name;
-  std::string method = "automode";                 // "automode" or "evostick"
-  std::vector<std::string> architectures;          // "fsm", "bt" (automode only)
-  std::vector<std::string> flavours;               // "chocolate", ... (automode only)
+  std::string method{design::kAutoMoDe.name};      // a name of design/methods.hpp
+  std::vector<std::string> architectures;          // "fsm", "bt" (methods with a design space)
+  std::vector<std::string> flavours;               // "chocolate", ... (methods with a design space)
 };
 
 struct MissionPlan {

@@ -7,15 +7,11 @@
 #include <cmath>
 #include <ctime>
 
-#include <nlohmann/json.hpp>
-
-#include "design/state.hpp"
 
 namespace sd::storage {
 
 namespace {
 
-using nlohmann::json;
 constexpr const char* kFormat = "swarmdesign-design";
 
 constexpr const char* kSchema = R"sql(
@@ -200,72 +196,59 @@ void DesignStore::read_meta() {
   race_logged_ = static_cast<int>(races.integer(0));
 }
 
-void DesignStore::save(const design::Checkpoint& c, std::span<const design::Elimination> eliminations,
-                       const design::ParameterSpace& space) {
-  const design::DesignState& s = c.state;
+void DesignStore::append(const CheckpointRows& rows) {
   Database& db = *db_;
   Transaction t(db);
-
   auto config = db.prepare(
       "INSERT INTO configurations (id, parent, iteration, record, command_line) VALUES (?, ?, ?, ?, ?)");
-  for (std::size_t i = c.first_new_configuration; i < s.configurations.size(); ++i) {
-    const auto& r = s.configurations.all()[i];
-    config.bind(1, r.id).bind(2, r.parent).bind(3, s.iteration).bind(4, design::record_to_json(r).at(2).dump());
-    config.bind(5, space.render(r.config));
+  for (const auto& c : rows.configurations) {
+    config.bind(1, c.id).bind(2, c.parent).bind(3, c.iteration).bind(4, c.record).bind(5, c.command_line);
     config.run();
   }
-
   auto experiment = db.prepare(
       "INSERT INTO experiments (seq, iteration, position, seed, configuration_id, cost) VALUES (?, ?, ?, ?, ?, ?)");
-  for (std::size_t i = c.first_new_experiment; i < s.experiments.size(); ++i) {
-    const auto& e = s.experiments[i];
-    experiment.bind(1, static_cast<std::int64_t>(i + 1)).bind(2, e.iteration).bind(3, static_cast<std::int64_t>(e.position));
-    experiment.bind(4, static_cast<std::int64_t>(s.instances.at(e.position).seed)).bind(5, e.configuration_id);
+  for (const auto& e : rows.experiments) {
+    experiment.bind(1, e.seq).bind(2, e.iteration).bind(3, e.position).bind(4, e.seed).bind(5, e.configuration_id);
     bind_cost(experiment, 6, e.cost);
     experiment.run();
   }
-
-  if (s.race && s.iteration > race_logged_) {
+  if (rows.race) {
     db.prepare("INSERT INTO races (iteration, race_budget, configurations) VALUES (?, ?, ?)")
-        .bind(1, s.iteration).bind(2, static_cast<std::int64_t>(s.current_budget))
-        .bind(3, static_cast<std::int64_t>(s.race->config_ids.size())).run();
+        .bind(1, rows.race->iteration).bind(2, rows.race->race_budget)
+        .bind(3, static_cast<std::int64_t>(rows.race->members.size())).run();
     auto member = db.prepare(
         "INSERT INTO race_configurations (iteration, configuration_id, elite, eliminated_after) VALUES (?, ?, ?, NULL)");
-    for (std::size_t k = 0; k < s.race->config_ids.size(); ++k) {
-      const int id = s.race->config_ids[k];
-      bool elite = false;
-      if (!s.first_race)
-        for (const auto& e : s.elites) elite = elite || e.id == id;
-      member.bind(1, s.iteration).bind(2, id).bind(3, elite ? 1 : 0);
+    for (const auto& [id, elite] : rows.race->members) {
+      member.bind(1, rows.race->iteration).bind(2, id).bind(3, elite ? 1 : 0);
       member.run();
     }
-    race_logged_ = s.iteration;
   }
   auto dropped = db.prepare(
       "UPDATE race_configurations SET eliminated_after = ? WHERE iteration = ? AND configuration_id = ?");
-  for (const auto& e : eliminations) {
-    dropped.bind(1, static_cast<std::int64_t>(e.after_instances)).bind(2, e.iteration).bind(3, e.configuration_id);
+  for (const auto& e : rows.eliminations) {
+    dropped.bind(1, e.after_instances).bind(2, e.iteration).bind(3, e.configuration_id);
     dropped.run();
   }
-
   auto elite = db.prepare("INSERT INTO elites (iteration, rank, configuration_id) VALUES (?, ?, ?)");
-  for (; elite_iterations_ < s.all_elites.size(); ++elite_iterations_) {
-    const auto& ids = s.all_elites[elite_iterations_];
+  std::size_t iteration = elite_iterations_;
+  for (const auto& ids : rows.new_elites) {
+    ++iteration;
     for (std::size_t rank = 0; rank < ids.size(); ++rank) {
-      elite.bind(1, static_cast<std::int64_t>(elite_iterations_ + 1)).bind(2, static_cast<std::int64_t>(rank + 1));
-      elite.bind(3, ids[rank]);
+      elite.bind(1, static_cast<std::int64_t>(iteration)).bind(2, static_cast<std::int64_t>(rank + 1)).bind(3, ids[rank]);
       elite.run();
     }
   }
-
-  const json state = design::state_to_json(s, false);
   db.prepare("INSERT OR REPLACE INTO checkpoint (id, step, phase, state, saved_at) VALUES (1, ?, ?, ?, ?)")
-      .bind(1, ++step_).bind(2, state.at("phase").get<std::string>()).bind(3, state.dump())
+      .bind(1, step_ + 1).bind(2, rows.phase).bind(3, rows.state)
       .bind(4, static_cast<std::int64_t>(std::time(nullptr))).run();
   t.commit();
+  // Counted only once the rows are durable: a failed write leaves the store as it was.
+  ++step_;
+  elite_iterations_ = iteration;
+  if (rows.race) race_logged_ = rows.race->iteration;
 }
 
-std::optional<design::DesignState> DesignStore::load_state() {
+std::optional<StoredCheckpoint> DesignStore::load() {
   Database& db = *db_;
   try {
     db.execute("BEGIN");  // one snapshot for the state and its history
@@ -274,25 +257,21 @@ std::optional<design::DesignState> DesignStore::load_state() {
       db.execute("COMMIT");
       return std::nullopt;
     }
-    const json state = json::parse(q.text(0));
-    design::History history;
+    StoredCheckpoint stored;
+    stored.state = q.text(0);
     auto configs = db.prepare("SELECT id, parent, record FROM configurations ORDER BY id");
     while (configs.step())
-      history.configurations.push_back(design::config_record_from_json(
-          json::array({configs.integer(0), configs.integer(1), json::parse(configs.text(2))})));
-    auto log = db.prepare("SELECT iteration, position, configuration_id, cost FROM experiments ORDER BY seq");
+      stored.configurations.push_back(
+          {static_cast<int>(configs.integer(0)), static_cast<int>(configs.integer(1)), 0, configs.text(2), ""});
+    auto log = db.prepare("SELECT seq, iteration, position, configuration_id, cost FROM experiments ORDER BY seq");
     while (log.step())
-      history.experiments.push_back({static_cast<int>(log.integer(0)), static_cast<std::size_t>(log.integer(1)),
-                                     static_cast<int>(log.integer(2)),
-                                     log.is_null(3) ? std::nan("") : log.real(3)});
+      stored.experiments.push_back({log.integer(0), static_cast<int>(log.integer(1)), log.integer(2), 0,
+                                    static_cast<int>(log.integer(3)), log.is_null(4) ? std::nan("") : log.real(4)});
     db.execute("COMMIT");
-    return design::state_from_json(state, std::move(history));
+    return stored;
   } catch (const DatabaseError& e) {
     rollback(db);
     throw DesignFolderError(where(folder_) + "/design.db is damaged (" + e.what() + ")");
-  } catch (const std::exception& e) {
-    rollback(db);
-    throw DesignFolderError(where(folder_) + "/design.db holds a design state that cannot be read (" + e.what() + ")");
   }
 }
 

@@ -15,17 +15,17 @@
 //                                         who raced, and after how many instances it was dropped
 //   elites(iteration, rank, configuration_id)              elites at the end of every iteration
 //   checkpoint(id = 1, step, phase, state, saved_at)       the engine's compact state (JSON)
+//
+// The rows are plain values: storage does not know the optimiser. Turning the optimiser's
+// checkpoints into rows and back is app/design_db_checkpoints (a design::CheckpointStore).
 #include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <optional>
-#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "design/iterated_race.hpp"
-#include "design/race_log.hpp"
 #include "storage/sqlite.hpp"
 
 namespace sd::storage {
@@ -50,6 +50,46 @@ struct DesignMeta {
   int results_version = 1;    // kResultsVersion of the build that started it; 1 when not kept
 };
 
+/// One checkpoint's new rows, written in one transaction.
+struct CheckpointRows {
+  struct Configuration {
+    int id = 0, parent = 0, iteration = 0;
+    std::string record;        // exact parameter values (JSON)
+    std::string command_line;
+  };
+  struct Experiment {
+    std::int64_t seq = 0;      // 1-based place in the engine's log
+    int iteration = 0;
+    std::int64_t position = 0;
+    std::int64_t seed = 0;
+    int configuration_id = 0;
+    double cost = 0.0;         // NaN is kept as NULL
+  };
+  struct Race {                // a race that started since the last checkpoint
+    int iteration = 0;
+    std::int64_t race_budget = 0;
+    std::vector<std::pair<int, bool>> members;  // configuration id, elite of the previous iteration
+  };
+  struct Elimination {
+    int iteration = 0, configuration_id = 0;
+    std::int64_t after_instances = 0;
+  };
+  std::vector<Configuration> configurations;
+  std::vector<Experiment> experiments;
+  std::optional<Race> race;
+  std::vector<Elimination> eliminations;
+  std::vector<std::vector<int>> new_elites;  // per iteration from elite_iterations() + 1, best first
+  std::string phase;
+  std::string state;                         // the engine's compact state (JSON text)
+};
+
+/// The last checkpoint as stored: the compact state and the whole append-only history.
+struct StoredCheckpoint {
+  std::string state;
+  std::vector<CheckpointRows::Configuration> configurations;  // id, parent, record; by id
+  std::vector<CheckpointRows::Experiment> experiments;        // iteration, position, id, cost; by seq
+};
+
 class DesignStore {
  public:
   static std::filesystem::path file_in(const std::filesystem::path& folder) { return folder / "design.db"; }
@@ -64,15 +104,17 @@ class DesignStore {
   const std::filesystem::path& folder() const { return folder_; }
   Database& database() { return *db_; }
 
-  /// Appends what is new since the last checkpoint and replaces the engine state, in one
-  /// transaction.
-  void save(const design::Checkpoint& checkpoint, std::span<const design::Elimination> eliminations,
-            const design::ParameterSpace& space);
-  /// The last checkpoint with its whole history, or nullopt when the design saved none yet.
-  /// DesignFolderError when the stored state does not fit together.
-  std::optional<design::DesignState> load_state();
+  /// Appends a checkpoint's new rows and replaces the engine state, in one transaction.
+  void append(const CheckpointRows& rows);
+  /// The last checkpoint with its whole history, or nullopt when the design saved none yet;
+  /// DesignFolderError when the file cannot be read.
+  std::optional<StoredCheckpoint> load();
   /// The number of the last checkpoint saved (0 before the first).
   std::int64_t step() const { return step_; }
+  /// Iterations whose elites are stored, and the last iteration whose race is logged: what a
+  /// writer needs to tell the new rows from the stored ones.
+  std::size_t elite_iterations() const { return elite_iterations_; }
+  int race_logged() const { return race_logged_; }
 
  private:
   DesignStore(std::filesystem::path folder, std::unique_ptr<Database> db);

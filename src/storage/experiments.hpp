@@ -36,7 +36,7 @@ std::string to_string(DesignStage stage);
 struct PlannedDesign {
   std::string mission, condition;
   int replicate = 1;
-  std::string method;                  // "automode" or "evostick"
+  std::string method;                  // a design method's name (design/methods.hpp)
   std::string architectures, flavours; // as the designs table writes them ("" for evostick)
   std::int64_t budget = 0;
   std::uint64_t seed = 0;

@@ -197,6 +197,26 @@ TEST(EvoStick, AnEvolutionResumedFromAnyGenerationEndsAsTheUninterruptedOne) {
                std::invalid_argument);
 }
 
+TEST(EvoStick, AStopRequestEndsAfterTheGenerationWhoseStateIsSavedAndTheRestResumesExactly) {
+  ScriptedEvaluator whole_evaluator(0.5, 3.0);
+  const auto whole = evostick::evolve(Mission{}, Direction::Maximize, whole_evaluator, small(6, 9));
+  EXPECT_FALSE(whole.stopped);
+  ScriptedEvaluator first_evaluator(0.5, 3.0);
+  std::vector<evostick::Checkpoint> saved;
+  int asked = 0;
+  const auto stopped = evostick::evolve(
+      Mission{}, Direction::Maximize, first_evaluator, small(6, 9), {}, nullptr,
+      [&](const evostick::Checkpoint& c) { saved.push_back(c); }, [&] { return ++asked == 2; });
+  EXPECT_TRUE(stopped.stopped);
+  EXPECT_EQ(first_evaluator.batches.size(), 2u) << "two generations, then the stop";
+  ASSERT_EQ(saved.back().generation, 2) << "the state after the last generation run is saved";
+  ScriptedEvaluator rest_evaluator(0.5, 3.0);
+  const auto rest = evostick::evolve(Mission{}, Direction::Maximize, rest_evaluator, small(6, 9), {}, &saved.back());
+  EXPECT_EQ(rest.best, whole.best);
+  EXPECT_EQ(rest.history, whole.history);
+  EXPECT_EQ(rest_evaluator.batches.size(), 4u);
+}
+
 TEST(EvoStick, SettingsAndBudgetsAreChecked) {
   EXPECT_NO_THROW(Settings{}.validate());
   const std::pair<std::function<void(Settings&)>, std::string> cases[] = {

@@ -1,9 +1,5 @@
-#include "app/documents.hpp"
+#include "app/documents/design.hpp"
 
-#include <algorithm>
-
-#include "control/config_string.hpp"
-#include "statistics/descriptive.hpp"
 #include "storage/clock.hpp"
 
 namespace sd::app {
@@ -19,6 +15,7 @@ json configuration_score(const storage::ConfigurationScore& c) {
   return {{"id", c.id}, {"configuration", c.command_line}, {"mean_score", c.mean_score}, {"runs", c.runs}};
 }
 }  // namespace
+
 
 json design_report_document(const DesignReport& r) {
   json elites = json::array();
@@ -107,79 +104,6 @@ json design_row_document(const storage::Design& d) {
           {"created", storage::format_time(d.created_at)},
           {"best_configuration", d.best_config ? json(*d.best_config) : json()},
           {"best_score", d.best_score ? json(*d.best_score) : json()}};
-}
-
-json project_document(const storage::Project& project) {
-  json out{{"name", project.name},
-           {"folder", project.folder.string()},
-           {"location", project.cluster ? "cluster" : "local"},
-           {"mission", project.mission ? json(*project.mission) : json()},
-           {"budget", project.budget ? json(*project.budget) : json()},
-           {"active", project.active},
-           {"created", storage::format_time(project.created_at)}};
-  if (project.cluster)
-    out["cluster"] = {{"host", project.cluster->host},
-                      {"user", project.cluster->user},
-                      {"folder", project.cluster->workdir_or_default()},
-                      {"binary", project.cluster->binary_or_default()}};
-  return out;
-}
-
-json projects_document(const std::vector<storage::Project>& projects) {
-  json list = json::array();
-  for (const auto& project : projects) list.push_back(project_document(project));
-  return {{"projects", list}};
-}
-
-json users_document(const UserList& users) {
-  json list = json::array();
-  for (const auto& user : users.users)
-    list.push_back({{"name", user.name},
-                    {"created", storage::format_time(user.created_at)},
-                    {"signed_in", users.me && *users.me == user.id}});
-  return {{"users", list}};
-}
-
-json missions_document(const std::vector<MissionSummary>& missions) {
-  json out = json::array();
-  for (const auto& m : missions)
-    out.push_back({{"name", m.name}, {"title", m.title}, {"origin", m.origin}, {"robots", m.robots},
-                   {"duration_s", m.duration_s}, {"direction", m.direction}, {"source", m.source}});
-  return out;
-}
-
-json mission_document(const Mission& m) {
-  return {{"name", m.name},
-          {"title", m.title},
-          {"origin", m.origin},
-          {"description", m.description},
-          {"robots", m.robots},
-          {"duration_s", m.duration_s},
-          {"ticks", m.ticks},
-          {"walls", m.arena.walls.size()},
-          {"floor_patches", m.arena.floor_patches.size()},
-          {"lights", m.arena.lights.size()},
-          {"objective", m.objective.type},
-          {"direction", direction_name(m.objective.direction)},
-          {"source", m.source}};
-}
-
-ScoreSummary summarize(const std::vector<double>& scores) {
-  return {statistics::mean(scores), statistics::median(scores)};
-}
-
-json scores_document(const Mission& mission, const ControlSoftware& software, const std::vector<std::uint64_t>& seeds,
-                     const std::vector<double>& scores) {
-  json runs = json::array();
-  for (std::size_t i = 0; i < seeds.size(); ++i) runs.push_back({{"seed", seeds[i]}, {"score", scores[i]}});
-  json out{{"mission", mission.name}, {"direction", direction_name(mission.objective.direction)},
-           {"control_software", to_config_string(software)}, {"runs", runs}};
-  if (seeds.size() > 1) {
-    const ScoreSummary summary = summarize(scores);
-    out["mean"] = summary.mean;
-    out["median"] = summary.median;
-  }
-  return out;
 }
 
 }  // namespace sd::app

@@ -1,0 +1,25 @@
+#pragma once
+// The documents of a design: its final report, its live and stored progress, its race log and
+// convergence, its row in a project.
+#include <nlohmann/json.hpp>
+
+#include <vector>
+
+#include "app/design_job.hpp"
+#include "design/iterated_race.hpp"
+#include "storage/design_status.hpp"
+#include "storage/designs.hpp"
+
+namespace sd::app {
+
+nlohmann::json design_report_document(const DesignReport& report);
+/// A race step as a design reports it live (costs turned into the mission's scores).
+nlohmann::json progress_document(const design::Progress& progress, bool maximise);
+/// A design's progress as read from its design.db (status).
+nlohmann::json stored_progress_document(const storage::DesignProgress& progress);
+nlohmann::json race_log_document(const std::vector<storage::RaceRecord>& log);
+/// [{"iteration","runs_used","best_id","best_score"}]: the best elite's mean over all its runs so far.
+nlohmann::json convergence_document(const std::vector<storage::ConvergencePoint>& points);
+nlohmann::json design_row_document(const storage::Design& design);
+
+}  // namespace sd::app

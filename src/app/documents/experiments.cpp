@@ -1,0 +1,40 @@
+#include "app/documents/experiments.hpp"
+
+#include "app/experiment_job.hpp"
+#include "experiments/protocol.hpp"
+
+namespace sd::app {
+
+nlohmann::json plan_document(const PlannedExperiment& plan, const DurationEstimate* estimate) {
+  nlohmann::json designs = nlohmann::json::array();
+  for (const auto& d : plan.designs)
+    designs.push_back({{"mission", d.mission}, {"condition", d.condition}, {"replicate", d.replicate}, {"method", d.method},
+                       {"architectures", d.architectures}, {"flavours", d.flavours}, {"budget", d.budget}, {"seed", d.seed}});
+  nlohmann::json doc{{"protocol", experiments::to_json(plan.protocol)}, {"designs", designs}, {"notes", plan.notes},
+                     {"design_runs", plan.design_runs}, {"assessment_runs", plan.assessment_runs}};
+  if (estimate) {
+    nlohmann::json missions = nlohmann::json::array();
+    for (const auto& m : estimate->missions)
+      missions.push_back({{"mission", m.mission}, {"runs", m.runs}, {"seconds_per_run", m.seconds_per_run}});
+    doc["estimate"] = {{"threads", estimate->threads}, {"seconds", estimate->seconds}, {"missions", missions}};
+  }
+  return doc;
+}
+
+nlohmann::json experiments_document(const std::vector<ExperimentProgress>& experiments) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& e : experiments) {
+    nlohmann::json item{{"name", e.experiment.name},
+                        {"state", storage::to_string(e.experiment.state)},
+                        {"designs", e.designs},
+                        {"designs_done", e.designs_done}};
+    if (e.current)
+      item["current"] = {{"mission", mission_label(e.current->plan.mission)},     {"condition", e.current->plan.condition},
+                         {"replicate", e.current->plan.replicate}, {"stage", storage::to_string(e.current->stage)},
+                         {"budget", e.current->plan.budget},       {"folder", e.current->folder.string()}};
+    list.push_back(std::move(item));
+  }
+  return list;
+}
+
+}  // namespace sd::app
