@@ -196,9 +196,6 @@ void Experiments::reuse(std::int64_t design_id, const ExperimentDesign& twin) {
              "wall_seconds = ?, reused_from = ? WHERE id = ?")
       .bind(1, twin.configuration.value()).bind(2, twin.design_score.value_or(0.0)).bind(3, twin.runs_used.value_or(0))
       .bind(4, twin.wall_seconds).bind(5, twin.id).bind(6, design_id).run();
-  db.prepare("INSERT OR REPLACE INTO experiment_progress (design_id, runs_used, best_score) "
-             "SELECT ?, runs_used, best_score FROM experiment_progress WHERE design_id = ?")
-      .bind(1, design_id).bind(2, twin.id).run();
   transaction.commit();
 }
 
@@ -228,22 +225,6 @@ void Experiments::add_wall_seconds(std::int64_t design_id, double seconds) {
   workspace_.database()
       .prepare("UPDATE experiment_designs SET wall_seconds = wall_seconds + ? WHERE id = ?")
       .bind(1, seconds).bind(2, design_id).run();
-}
-
-void Experiments::record_progress(std::int64_t design_id, std::int64_t runs_used, double best_score) {
-  workspace_.database()
-      .prepare("INSERT OR REPLACE INTO experiment_progress (design_id, runs_used, best_score) VALUES (?, ?, ?)")
-      .bind(1, design_id).bind(2, runs_used).bind(3, best_score).run();
-}
-
-std::vector<std::pair<std::int64_t, double>> Experiments::progress(std::int64_t design_id) {
-  require_design(design_id);
-  std::vector<std::pair<std::int64_t, double>> points;
-  auto query = workspace_.database().prepare(
-      "SELECT runs_used, best_score FROM experiment_progress WHERE design_id = ? ORDER BY runs_used");
-  query.bind(1, design_id);
-  while (query.step()) points.emplace_back(query.integer(0), query.real(1));
-  return points;
 }
 
 void Experiments::record_assessment(std::int64_t design_id, const std::vector<std::uint64_t>& seeds,

@@ -90,10 +90,6 @@ class Experiments {
   void design_finished(std::int64_t design_id, const std::string& configuration, double design_score,
                        std::int64_t runs_used);
   void add_wall_seconds(std::int64_t design_id, double seconds);
-  /// Best estimated score after `runs_used` runs, for designs without a race of their own to
-  /// read it from (EvoStick's generations); a resumed one writes the same points again.
-  void record_progress(std::int64_t design_id, std::int64_t runs_used, double best_score);
-  std::vector<std::pair<std::int64_t, double>> progress(std::int64_t design_id);
   /// Every assessment score at once, and the design is done.
   void record_assessment(std::int64_t design_id, const std::vector<std::uint64_t>& seeds,
                          const std::vector<double>& scores);
