@@ -33,6 +33,11 @@ bool FileScope::allows(const std::filesystem::path& path) const {
   return !ec && is_within(real, *root_);
 }
 
+PathRule FileScope::path_rule() const {
+  if (!root_) return {};
+  return [root = *root_](const std::filesystem::path& real) { return is_within(real, root); };
+}
+
 void FileScope::refuse(const std::string& path, const std::string& what) const {
   throw NotFound(what + " " + path +
                  " is not a file of your projects (here you may name the catalogue's missions and files inside "
@@ -81,17 +86,11 @@ Mission load_requested_mission(const std::string& name_or_path, const FileScope&
     }
     if (scope.is_local()) return load_mission_file(name_or_path);
     const std::string text = scope.read(name_or_path, "mission file");
-    Mission mission;
     try {
-      mission = parse_mission(text, name_or_path);
+      return parse_mission(text, name_or_path, scope.path_rule());
     } catch (const MissionError& e) {
       throw MissionError(std::filesystem::path(name_or_path).filename().string() + ": " + e.what());
     }
-    // A module-set folder is read as the user's files are.
-    if (mission.arlequin_modules && !arlequin::builtin_module_set(mission.arlequin_modules->name) &&
-        !scope.allows(mission.arlequin_modules->name))
-      scope.read(mission.arlequin_modules->name, "Arlequin module set");  // refuses
-    return mission;
   } catch (const MissionError& e) {
     throw InvalidRequest(e.what());
   }
@@ -100,10 +99,8 @@ Mission load_requested_mission(const std::string& name_or_path, const FileScope&
 Mission with_requested_arlequin_modules(const Mission& mission, const std::string& name_or_folder,
                                        const FileScope& scope) {
   if (name_or_folder.empty()) return mission;
-  if (!arlequin::builtin_module_set(name_or_folder) && !scope.allows(name_or_folder))
-    scope.read(name_or_folder, "Arlequin module set");  // refuses
   try {
-    return with_arlequin_modules(mission, name_or_folder);
+    return with_arlequin_modules(mission, name_or_folder, scope.path_rule());
   } catch (const MissionError& e) {
     throw InvalidRequest(e.what());
   }

@@ -26,6 +26,9 @@ class FileScope {
   bool is_local() const { return !root_; }
   /// Whether a (not yet resolved) path leads inside the scope.
   bool allows(const std::filesystem::path& path) const;
+  /// The same rule for a reader below the application (a mission's module-set folder): asked
+  /// about the real path of each file opened; empty (anything) for the CLI.
+  PathRule path_rule() const;
   /// The whole text of a file the user named, `what` naming it in messages ("mission file").
   /// NotFound (one message for missing and forbidden) outside the scope; InvalidRequest for a
   /// special or oversized file; NotFound naming the error for a missing file on the CLI.

@@ -11,6 +11,7 @@
 #include <variant>
 #include <vector>
 
+#include "core/bounded_file.hpp"
 #include "missions/arrest_rule.hpp"
 #include "missions/led_arena.hpp"
 #include "missions/mission_events.hpp"
@@ -93,11 +94,12 @@ struct MissionError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-Mission parse_mission(const std::string& json_text, const std::string& source);
+/// `allowed`: where files the mission names (an Arlequin module-set folder) may be read; anywhere if empty.
+Mission parse_mission(const std::string& json_text, const std::string& source, const PathRule& allowed = {});
 Mission load_mission_file(const std::filesystem::path& path);
 /// The mission with its "arlequin_modules" field set to `name_or_folder` (a folder made
 /// absolute from the current one), re-read so that its document and digest say so (what a
 /// design records and an MPI rank rebuilds). MissionError naming the field if the set is bad.
-Mission with_arlequin_modules(const Mission& mission, const std::string& name_or_folder);
+Mission with_arlequin_modules(const Mission& mission, const std::string& name_or_folder, const PathRule& allowed = {});
 
 }  // namespace sd

@@ -278,14 +278,14 @@ std::string runs_digest(json document, const arlequin::ModuleSet* arlequin_modul
 
 /// "swarmdesign", "demiurge", or a folder: relative to the mission file's folder when the
 /// mission was read from a file, else to the current folder.
-std::shared_ptr<const arlequin::ModuleSet> read_arlequin_modules(const Field& f, const std::string& source) {
+std::shared_ptr<const arlequin::ModuleSet> read_arlequin_modules(const Field& f, const std::string& source, const PathRule& allowed) {
   std::string name = f.text();
   if (!arlequin::builtin_module_set(name) && std::filesystem::path(name).is_relative()) {
     const std::filesystem::path file(source);
     if (file.has_parent_path() && std::filesystem::is_regular_file(file)) name = (file.parent_path() / name).string();
   }
   try {
-    return arlequin::load_module_set(name);
+    return arlequin::load_module_set(name, allowed);
   } catch (const std::runtime_error& e) {
     f.fail(e.what());
   }
@@ -295,7 +295,7 @@ std::shared_ptr<const arlequin::ModuleSet> read_arlequin_modules(const Field& f,
 
 std::string_view direction_name(Direction d) { return d == Direction::Maximize ? "maximize" : "minimize"; }
 
-Mission parse_mission(const std::string& json_text, const std::string& source) {
+Mission parse_mission(const std::string& json_text, const std::string& source, const PathRule& allowed) {
   json document;
   try {
     document = json::parse(json_text, nullptr, true, /*ignore_comments=*/true);
@@ -307,7 +307,7 @@ Mission parse_mission(const std::string& json_text, const std::string& source) {
              "arlequin_modules"});
   Mission m;
   m.source = source;
-  if (root.has("arlequin_modules")) m.arlequin_modules = read_arlequin_modules(root.at("arlequin_modules"), source);
+  if (root.has("arlequin_modules")) m.arlequin_modules = read_arlequin_modules(root.at("arlequin_modules"), source, allowed);
   m.digest = runs_digest(document, m.arlequin_modules.get());
   m.document = json_text;
   m.name = root.at("name").text();
@@ -341,7 +341,7 @@ Mission parse_mission(const std::string& json_text, const std::string& source) {
   return m;
 }
 
-Mission with_arlequin_modules(const Mission& mission, const std::string& name_or_folder) {
+Mission with_arlequin_modules(const Mission& mission, const std::string& name_or_folder, const PathRule& allowed) {
   json document = json::parse(mission.document, nullptr, true, /*ignore_comments=*/true);
   // A folder by absolute path, so the document reads the same set from anywhere; anything
   // else as given, for parse_mission to accept or name in its error.
@@ -349,7 +349,7 @@ Mission with_arlequin_modules(const Mission& mission, const std::string& name_or
   const bool folder = !arlequin::builtin_module_set(name_or_folder) && std::filesystem::is_directory(name_or_folder, ec);
   document["arlequin_modules"] =
       folder ? std::filesystem::absolute(name_or_folder).lexically_normal().string() : name_or_folder;
-  return parse_mission(document.dump(1), mission.source);
+  return parse_mission(document.dump(1), mission.source, allowed);
 }
 
 Mission load_mission_file(const std::filesystem::path& path) {

@@ -60,17 +60,29 @@ ModuleSet swarmdesign_builtin() {
   return set;
 }
 
-ModuleSet folder_set(const std::string& folder) {
+// `allowed` (a shared server's scope) is asked about every file's real path; a file it refuses
+// and a missing one get the same words, so a set names no file it may not read.
+std::string read_set_file(const std::filesystem::path& file, const std::string& what, const PathRule& allowed) {
+  try {
+    return read_bounded_file(file, what, kMaxInputFileBytes, allowed).text;
+  } catch (const FileReadError& e) {
+    if (allowed && (e.problem == FileProblem::Missing || e.problem == FileProblem::Outside))
+      throw std::runtime_error(what + " " + file.string() + " is not a file of your projects");
+    throw;
+  }
+}
+
+ModuleSet folder_set(const std::string& folder, const PathRule& allowed) {
   const std::filesystem::path dir(folder);
   ModuleSet set{folder, Machinery::SwarmDesign, {}, {}};
   for (std::size_t d = 0; d < kModuleNames.size(); ++d) {
     const std::filesystem::path file = dir / (std::string(kModuleNames[d]) + ".json");
-    set.weights[d] = weights_from_json(read_bounded_file(file, "weight document").text, file.string());
+    set.weights[d] = weights_from_json(read_set_file(file, "weight document", allowed), file.string());
   }
   const std::filesystem::path profile = dir / (std::string(kProfileFile) + ".json");
   std::error_code ec;
   if (std::filesystem::exists(profile, ec))
-    set.machinery = machinery_from_profile(read_bounded_file(profile, "module-set file").text, profile.string());
+    set.machinery = machinery_from_profile(read_set_file(profile, "module-set file", allowed), profile.string());
   set_digest(set);
   return set;
 }
@@ -104,16 +116,18 @@ const ModuleSet* builtin_module_set(std::string_view name) {
   return nullptr;
 }
 
-std::shared_ptr<const ModuleSet> load_module_set(const std::string& name_or_folder) {
+std::shared_ptr<const ModuleSet> load_module_set(const std::string& name_or_folder, const PathRule& allowed) {
   if (const ModuleSet* builtin = builtin_module_set(name_or_folder))
     return std::shared_ptr<const ModuleSet>(builtin, [](const ModuleSet*) {});
   std::error_code ec;
-  if (!std::filesystem::is_directory(name_or_folder, ec))
+  // A folder outside `allowed` is answered as a missing one, before anything in it is touched.
+  const auto real = std::filesystem::canonical(name_or_folder, ec);
+  if (ec || (allowed && !allowed(real)) || !std::filesystem::is_directory(real, ec))
     throw std::runtime_error("Arlequin module set '" + name_or_folder +
                              "' is neither swarmdesign, demiurge nor a folder of the six weight documents");
   ModuleSet set;
   try {
-    set = folder_set(name_or_folder);
+    set = folder_set(name_or_folder, allowed);
   } catch (const std::exception& e) {
     throw std::runtime_error("Arlequin module set " + name_or_folder + ": " + e.what());
   }

@@ -15,6 +15,7 @@
 #include <string>
 #include <string_view>
 
+#include "core/bounded_file.hpp"
 #include "modules/arlequin.hpp"
 #include "modules/behaviours.hpp"
 
@@ -44,6 +45,6 @@ inline constexpr std::string_view kDefaultModuleSet = "swarmdesign";
 const ModuleSet* builtin_module_set(std::string_view name);
 /// "swarmdesign", "demiurge", or a folder of weight documents (read now). Throws
 /// std::runtime_error with one line naming what is wrong.
-std::shared_ptr<const ModuleSet> load_module_set(const std::string& name_or_folder);
+std::shared_ptr<const ModuleSet> load_module_set(const std::string& name_or_folder, const PathRule& allowed = {});
 
 }  // namespace sd::arlequin
