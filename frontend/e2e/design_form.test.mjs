@@ -128,8 +128,25 @@ test('the best design opens in the editor, drawn full size', { timeout: 30000 },
 
 test('after a crash and a restart the design list and the state box agree: interrupted', { timeout: 120000 }, async () => {
   await page.waitForFunction(() => !document.getElementById('design-start').disabled);
-  // The stopped design resumes as it was started, whatever the form says, and the page says so.
-  await page.selectOption('#design-preset', 'all');
+  // The stopped design resumes as it was started, and the page says so: the form's choices are
+  // greyed out (never painted invalid) until the user gives the design up to start afresh.
+  assert.equal(await page.textContent('#design-start'), 'Resume design #1');
+  assert.ok(await page.isDisabled('#design-preset'));
+  assert.ok(await page.isDisabled('#design-budget'));
+  // A budget below the minimum is not painted red while it is not used, and is once it would be.
+  const typeBudget = (value) => page.$eval('#design-budget', (input, v) => { input.value = v; input.dispatchEvent(new Event('input')); }, value);
+  const background = (id) => page.$eval(id, (input) => getComputedStyle(input).backgroundColor);
+  await typeBudget('1');
+  assert.equal(await background('#design-budget'), await background('#design-seed'), 'the unused budget is not painted invalid');
+  await page.check('#design-fresh');
+  assert.equal(await page.textContent('#design-start'), 'Start design');
+  assert.ok(await page.isEnabled('#design-preset'));
+  assert.notEqual(await background('#design-budget'), await background('#design-seed'), 'a budget that would be used is painted invalid');
+  await shot(page, 'resume-fresh-1280');
+  await page.uncheck('#design-fresh');
+  await typeBudget(String(budget));
+  assert.ok(await page.isDisabled('#design-budget'));
+  await shot(page, 'resume-offered-1280');
   assert.equal(await page.textContent('#design-start'), 'Resume design #1');
   assert.match(await page.textContent('#design-resume'), /Design #1 is interrupted: Start resumes it as it was started \(fsm · chocolate · seed 7/);
   await page.click('#design-start');

@@ -160,6 +160,7 @@ export function initMonitor({ onWatch, onEdit, missions }) {
     $('design-resume-text').textContent = resumable
       ? `Design #${design.id} is ${design.state}: Start resumes it as it was started (${startedWith(design)}). ` : '';
     $('design-start').textContent = resumable && !fresh ? `Resume design #${design.id}` : 'Start design';
+    $('design-choices').disabled = resumable && !fresh;
     if (!resumable) $('design-fresh').checked = false;
   }
 
