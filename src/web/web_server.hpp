@@ -52,6 +52,7 @@ class WebServer {
   std::unique_ptr<WebContext> context_;
   std::unique_ptr<httplib::Server> server_;
   HostCheck hosts_;  // set by bind(), before the first request is read
+  int binding_socket_ = -1;  // the socket bind() is making (set_socket_options sees it first)
 };
 
 }  // namespace sd::web
