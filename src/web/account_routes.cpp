@@ -13,6 +13,9 @@ void add_account_routes(Routes& routes) {
   routes.post_public("/api/sign-in", [](Call& call) {
     const std::string name = text_field(call.body, "name");
     const std::string& address = call.request.remote_addr;
+    // The slot first: a request that waited for it finds a lock-out its predecessors set, and
+    // is refused without a check.
+    const PasswordSlots::Held slot = call.context.passwords.take();
     if (const std::int64_t wait = call.context.addresses.locked_for(address); wait > 0)
       throw storage::TooManyAttempts("too many failed sign-ins from your address: try again in " +
                                          std::to_string(wait) + " s",

@@ -12,6 +12,7 @@
 #include "app/background_designs.hpp"
 #include "app/home.hpp"
 #include "storage/accounts.hpp"
+#include "web/password_slots.hpp"
 #include "web/run_registry.hpp"
 #include "web/session_guard.hpp"
 #include "web/sign_in_limiter.hpp"
@@ -22,11 +23,13 @@ namespace sd::web {
 struct WebContext {
   WebContext(std::filesystem::path home_folder, std::filesystem::path web_root_folder, storage::SignInPolicy policy)
       : home(home_folder), web_root(std::move(web_root_folder)), sign_in(policy), addresses(policy),
-        designs("web") {}
+        passwords(kPasswordChecksAtOnce), designs("web") {}
+  static constexpr int kPasswordChecksAtOnce = 4;  // 256 MiB of Argon2id at most
   std::filesystem::path home;
   std::filesystem::path web_root;  // the built front end (the report page's bundle)
   storage::SignInPolicy sign_in;
   SignInLimiter addresses;         // failed sign-ins per client address
+  PasswordSlots passwords;         // password checks at once (password_slots.hpp)
   SessionGuard guard;
   RunRegistry runs;
   app::BackgroundDesigns designs;

@@ -1,6 +1,7 @@
 #include "web/web_server.hpp"
 
 #include <httplib.h>
+#include <sys/socket.h>
 
 #include <stdexcept>
 
@@ -22,10 +23,12 @@ WebServer::WebServer(WebServerOptions options)
   s.set_tcp_nodelay(true);
   // SO_REUSEADDR only: cpp-httplib's default adds SO_REUSEPORT, with which a second server
   // binds a port already served and the two silently share its connections.
-  s.set_socket_options([](socket_t sock) {
+  // Stream chunks are small: Nagle + delayed ACK would hold each for 40 ms (set_tcp_nodelay).
+  s.set_socket_options([this](socket_t sock) {
     int yes = 1;
     setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
-  });  // stream chunks are small: Nagle + delayed ACK would hold each for 40 ms
+    binding_socket_ = sock;  // only bind() makes sockets through this (accepted ones do not)
+  });
 
   s.set_pre_routing_handler([this](const httplib::Request& request, httplib::Response& response) {
     if (hosts_.allows(request.get_header_value("Host"))) return httplib::Server::HandlerResponse::Unhandled;
@@ -77,6 +80,11 @@ int WebServer::bind() {
   if (port < 0)
     throw std::runtime_error("cannot listen on " + options_.host + ":" + std::to_string(options_.port) +
                              " (in use, or not an address of this machine)");
+  // Debian's cpp-httplib listens with a backlog of 5 (CPPHTTPLIB_LISTEN_BACKLOG, fixed when the
+  // library was built): a few dozen tabs connecting at once overflowed it, and each dropped
+  // connection waited a second or more for TCP to try again, or failed (bench/load_bench).
+  // Listening again on the listening socket only sets a longer queue (the kernel caps it).
+  if (binding_socket_ >= 0) ::listen(binding_socket_, SOMAXCONN);
   hosts_ = HostCheck(options_.host, port, options_.allowed_hosts);
   return port;
 }

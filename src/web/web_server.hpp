@@ -28,8 +28,11 @@ struct WebServerOptions {
 
 /// Most bytes a request body may have (a configuration string is under 2 kB).
 inline constexpr std::size_t kMaxRequestBytes = 1 << 20;
-/// Connections served at once: each event-stream viewer holds one.
-inline constexpr int kServerThreads = 96;
+/// Connections served at once. cpp-httplib serves a connection on one thread for its whole life,
+/// and a browser keeps its connections open between requests (keep-alive) besides one per
+/// event stream: past this many, a new connection waits for one to close. 200 tabs, each with
+/// an Exec stream, hold 400 (bench/load_bench); an idle thread costs only its stack's touched pages.
+inline constexpr int kServerThreads = 512;
 
 class WebServer {
  public:
@@ -49,6 +52,7 @@ class WebServer {
   std::unique_ptr<WebContext> context_;
   std::unique_ptr<httplib::Server> server_;
   HostCheck hosts_;  // set by bind(), before the first request is read
+  int binding_socket_ = -1;  // the socket bind() is making (set_socket_options sees it first)
 };
 
 }  // namespace sd::web
