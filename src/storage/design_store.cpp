@@ -7,6 +7,7 @@
 #include <cmath>
 #include <ctime>
 
+#include "storage/power_cut.hpp"
 
 namespace sd::storage {
 
@@ -198,6 +199,7 @@ void DesignStore::read_meta() {
 
 void DesignStore::append(const CheckpointRows& rows) {
   Database& db = *db_;
+  PowerCutWindow power_cut;  // the crash-loop benchmark's torn write; nothing otherwise
   Transaction t(db);
   auto config = db.prepare(
       "INSERT INTO configurations (id, parent, iteration, record, command_line) VALUES (?, ?, ?, ?, ?)");
@@ -242,6 +244,7 @@ void DesignStore::append(const CheckpointRows& rows) {
       .bind(1, step_ + 1).bind(2, rows.phase).bind(3, rows.state)
       .bind(4, static_cast<std::int64_t>(std::time(nullptr))).run();
   t.commit();
+  power_cut.committed();
   // Counted only once the rows are durable: a failed write leaves the store as it was.
   ++step_;
   elite_iterations_ = iteration;
