@@ -7,6 +7,7 @@
 #include <cmath>
 #include <ctime>
 
+#include "storage/power_cut.hpp"
 
 namespace sd::storage {
 
@@ -92,6 +93,14 @@ void bind_cost(Statement& s, int index, double cost) {
   else s.bind(index, cost);
 }
 
+/// fsync, best effort: a file system that cannot sync a folder still gets the rename.
+void sync_file(const std::filesystem::path& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return;
+  ::fsync(fd);
+  ::close(fd);
+}
+
 void rollback(Database& db) {
   try {
     db.execute("ROLLBACK");
@@ -120,28 +129,48 @@ DesignStore DesignStore::create(const std::filesystem::path& folder, const Desig
   if (std::filesystem::exists(file_in(folder)))
     throw DesignFolderError(where(folder) + " already holds a design; continue it with --resume " + where(folder));
   std::filesystem::create_directories(folder);
-  DesignStore store(folder, open_database(folder, true));
-  Database& db = *store.db_;
-  Transaction t(db);
-  db.execute(kSchema);
-  auto put = db.prepare("INSERT INTO meta (key, value) VALUES (?, ?)");
-  const auto set = [&](const char* key, const std::string& value) {
-    put.bind(1, key).bind(2, value);
-    put.run();
-  };
-  set("format", kFormat);
-  set("format_version", std::to_string(kDesignFormatVersion));
-  set("mission", meta.mission);
-  set("direction", meta.direction);
-  set("budget", std::to_string(meta.budget));
-  set("architectures", meta.architectures);
-  set("flavours", meta.flavours);
-  set("seed", std::to_string(meta.seed));
-  set("fingerprint", meta.fingerprint);
-  set("mission_digest", meta.mission_digest);
-  set("results_version", std::to_string(meta.results_version));
-  set("created_at", std::to_string(std::time(nullptr)));
-  t.commit();
+  // Written whole under another name, then renamed: a design.db always has its schema and
+  // meta, so a process killed while creating it leaves a folder that starts anew, not a
+  // design.db that every resume refuses ("no meta table").
+  const std::filesystem::path draft = folder / "design.db.new";
+  PowerCutWindow power_cut;  // the tests' and the benchmark's kill inside this write; nothing otherwise
+  for (const char* suffix : {"", "-wal", "-shm", "-journal"}) std::filesystem::remove(draft.string() + suffix);
+  try {
+    Database db(draft, true);
+    Transaction t(db);
+    db.execute(kSchema);
+    auto put = db.prepare("INSERT INTO meta (key, value) VALUES (?, ?)");
+    const auto set = [&](const char* key, const std::string& value) {
+      put.bind(1, key).bind(2, value);
+      put.run();
+    };
+    set("format", kFormat);
+    set("format_version", std::to_string(kDesignFormatVersion));
+    set("mission", meta.mission);
+    set("direction", meta.direction);
+    set("budget", std::to_string(meta.budget));
+    set("architectures", meta.architectures);
+    set("flavours", meta.flavours);
+    set("seed", std::to_string(meta.seed));
+    set("fingerprint", meta.fingerprint);
+    set("mission_digest", meta.mission_digest);
+    set("results_version", std::to_string(meta.results_version));
+    set("created_at", std::to_string(std::time(nullptr)));
+    t.commit();
+    db.execute("PRAGMA wal_checkpoint(TRUNCATE)");  // everything in the main file before it is renamed
+  } catch (const DatabaseError& e) {
+    throw DesignFolderError("cannot create " + draft.string() + " (" + e.what() + ")");
+  }
+  // Closed, its write-ahead log is folded in and removed; what is left must be the whole design.
+  std::error_code ignored;
+  if (std::filesystem::file_size(draft.string() + "-wal", ignored) > 0 && !ignored)
+    throw DesignFolderError("cannot create " + draft.string() + " (its write-ahead log stayed behind)");
+  sync_file(draft);
+  if (::rename(draft.c_str(), file_in(folder).c_str()) != 0)
+    throw DesignFolderError("cannot rename " + draft.string() + " to " + file_in(folder).string());
+  sync_file(folder);  // the rename itself
+  power_cut.committed();
+  DesignStore store(folder, open_database(folder, false));
   store.meta_ = meta;
   return store;
 }
@@ -198,6 +227,7 @@ void DesignStore::read_meta() {
 
 void DesignStore::append(const CheckpointRows& rows) {
   Database& db = *db_;
+  PowerCutWindow power_cut;  // the crash-loop benchmark's torn write; nothing otherwise
   Transaction t(db);
   auto config = db.prepare(
       "INSERT INTO configurations (id, parent, iteration, record, command_line) VALUES (?, ?, ?, ?, ?)");
@@ -242,6 +272,7 @@ void DesignStore::append(const CheckpointRows& rows) {
       .bind(1, step_ + 1).bind(2, rows.phase).bind(3, rows.state)
       .bind(4, static_cast<std::int64_t>(std::time(nullptr))).run();
   t.commit();
+  power_cut.committed();
   // Counted only once the rows are durable: a failed write leaves the store as it was.
   ++step_;
   elite_iterations_ = iteration;

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <thread>
 
+#include "storage/power_cut.hpp"
+
 namespace sd::storage {
 
 namespace {
@@ -36,6 +38,7 @@ void switch_to_wal(sqlite3* db) {
 }  // namespace
 
 Database::Database(const std::filesystem::path& path, bool create) : path_(path) {
+  install_power_cut_if_asked();  // the benchmark's fault injection; a no-op otherwise
   const int flags = SQLITE_OPEN_READWRITE | (create ? SQLITE_OPEN_CREATE : 0) | SQLITE_OPEN_FULLMUTEX;
   if (sqlite3_open_v2(path.c_str(), &db_, flags, nullptr) != SQLITE_OK) {
     const std::string message = "cannot open database " + path.string();
