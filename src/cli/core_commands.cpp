@@ -78,9 +78,9 @@ void register_mission_show(CLI::App& app) {
 void register_evaluate(CLI::App& app, Context& context) {
   auto* cmd = app.add_subcommand("evaluate", "Simulate control software on a mission and print its score per seed");
   struct Options {
-    std::string mission, seeds, trace, render, arlequin_modules;
+    // The seed is text for app::parse_seed: CLI11 would read "-1" as 2^64-1.
+    std::string mission, seed = "1", seeds, trace, render, arlequin_modules;
     int render_every = 10;
-    std::uint64_t seed = 1;
     int threads = 0;
     bool json = false;
     ControlSoftwareOptions software;
@@ -109,7 +109,7 @@ void register_evaluate(CLI::App& app, Context& context) {
     const Mission mission = app::with_requested_arlequin_modules(app::load_requested_mission(o->mission), o->arlequin_modules);
     const ControlSoftware software = read_control_software(context, o->software);
     const std::vector<std::uint64_t> seeds =
-        o->seeds.empty() ? std::vector<std::uint64_t>{o->seed} : app::parse_seed_range(o->seeds);
+        o->seeds.empty() ? std::vector<std::uint64_t>{app::parse_seed(o->seed)} : app::parse_seed_range(o->seeds);
     if (!o->trace.empty() && seeds.size() != 1) throw UsageError("--trace records one run: use it with --seed");
     if (!o->render.empty() && (seeds.size() != 1 || !o->trace.empty()))
       throw UsageError("--render draws one run: use it with --seed, without --trace");

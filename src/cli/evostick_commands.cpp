@@ -19,7 +19,8 @@ namespace sd::cli {
 namespace {
 
 struct Options {
-  std::string module, mission, output, state, resume, budget;
+  // The seed is text for app::parse_seed: CLI11 would read "-1" as 2^64-1.
+  std::string module, mission, output, state, resume, budget, seed;
   int threads = 0;
   bool json = false;
   evostick::Settings settings;
@@ -62,7 +63,7 @@ void register_evostick(CLI::App& app, Context& context) {
                                  "Train an Arlequin module against its measure: " + evostick::module_names_text());
   auto* mission = cmd->add_option("--mission", o->mission, "Design a network for this mission (name or file)");
   module->excludes(mission);
-  auto* seed = cmd->add_option("--seed", o->settings.seed, "Seed of the evolution (default 1)");
+  auto* seed = cmd->add_option("--seed", o->seed, "Seed of the evolution (default 1)");
   auto* generations = cmd->add_option("--generations", o->settings.generations,
                                       "Generations (--module default: " +
                                           std::to_string(evostick::kShippedGenerations) + ", the shipped weights')");
@@ -111,6 +112,7 @@ void register_evostick(CLI::App& app, Context& context) {
       throw UsageError("--mission needs a budget: --budget RUNS or --generations G");
     if (module->count() > 0 && generations->count() == 0 && budget->count() == 0)
       o->settings.generations = evostick::kShippedGenerations;
+    if (!o->seed.empty()) o->settings.seed = app::parse_seed(o->seed);
     app::EvolutionRequest request{o->module, o->mission, o->settings, 0, o->state, o->output};
     if (budget->count() > 0) request.budget = app::parse_budget(o->budget);
     run_with_progress(*o, [&](const app::EvolutionRun& run) { return app::start_evolution(request, run); });

@@ -84,6 +84,23 @@ int run_command(int argc, char** argv, sd::cli::Context& context) {
       return 2;
     }
   }
+  // Only the commands that read control software (they all have --config-file) may be given
+  // it: any other would ignore it and run, e.g. a whole design.
+  if (context.has_control_software() && !args.empty() && args.front().rfind("-", 0) != 0) {
+    const CLI::App* command = nullptr;
+    for (const CLI::App* sub : app.get_subcommands({}))
+      if (sub->check_name(args.front())) command = sub;
+    if (command && !command->get_option_no_throw("--config-file")) {
+      print_error(command->get_name() + " takes no control software (" + context.control_software.front() +
+                  " ...); see --help");
+      return 2;
+    }
+  }
+  // CLI11 would answer "A subcommand is required" to `swarmdesign --bogus`: name the option.
+  if (!args.empty() && args.front().rfind("-", 0) == 0 && !app.get_option_no_throw(args.front())) {
+    print_error("unknown option '" + args.front() + "' (see --help)");
+    return 2;
+  }
   try {
     std::reverse(args.begin(), args.end());  // CLI11 takes the arguments reversed
     app.parse(args);

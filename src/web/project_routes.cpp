@@ -34,7 +34,11 @@ app::ProjectDesignRequest design_request(const json& body) {
   }
   request.space_given = !architectures.empty() || !flavours.empty();
   if (body.contains("seed") && !body.at("seed").is_null()) request.seed = app::parse_seed(text_field(body, "seed"));
-  request.fresh = body.value("fresh", false);
+  if (body.contains("fresh") && !body.at("fresh").is_null()) {
+    // body.value() would throw json's type_error, answered as a 500.
+    if (!body.at("fresh").is_boolean()) throw app::InvalidRequest("fresh must be true or false");
+    request.fresh = body.at("fresh").get<bool>();
+  }
   return request;
 }
 
