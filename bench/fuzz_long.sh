@@ -33,7 +33,7 @@ for t in $targets; do
   rc=$?
   seconds=$(( $(date +%s) - start ))
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$out/log" | tail -1)
-  rate=$(awk -v e="${execs:-0}" -v s="$seconds" 'BEGIN { printf "%d", s > 0 ? e / s : e }')
+  rate=$(awk -v e="${execs:-0}" -v s="$seconds" 'BEGIN { printf "%d", (s > 0 ? e / s : e) }')
   if [ $rc -eq 0 ]; then result=ok; else result="FINDING: $(ls "$out"/crash-* "$out"/leak-* "$out"/timeout-* "$out"/oom-* 2>/dev/null | head -1) (log $out/log)"; status=1; fi
   printf '%-14s %10s %9s %9s  %s\n' "$t" "${execs:-?}" "$seconds" "$rate" "$result"
 done

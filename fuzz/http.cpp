@@ -44,9 +44,10 @@ struct Harness {
   std::string cookie, csrf;
 };
 
+// Never destroyed: the server's threads still run when the process exits.
 Harness& harness() {
-  static Harness h;
-  return h;
+  static Harness* const h = new Harness;
+  return *h;
 }
 
 void set_up() {
