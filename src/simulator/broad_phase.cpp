@@ -55,7 +55,7 @@ void BroadPhase::list_near_pairs(std::span<const Vec2> position, double range) {
         const double dx = grid.x()[k] - x, dy = grid.y()[k] - y;
         const std::uint16_t b = grid.robot()[k];
         candidates[count] = b;
-        count += (b > a) & (dx * dx + dy * dy < range_sq) ? 1 : 0;
+        count += ((b > a) & (dx * dx + dy * dy < range_sq)) ? 1 : 0;
       }
     });
     std::sort(candidates.begin(), candidates.begin() + static_cast<std::ptrdiff_t>(count));
