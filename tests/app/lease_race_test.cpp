@@ -29,7 +29,7 @@ constexpr int kSweeps = 40;  // per sweeping request thread
 class LeaseRace : public ::testing::Test {
  protected:
   void SetUp() override {
-    root_ = std::filesystem::temp_directory_path() / ("sd-lease-race-" + std::to_string(::getpid()));
+    root_ = std::filesystem::temp_directory_path() / (std::string("sd-lease-race-") + std::to_string(::getpid()));
     std::filesystem::remove_all(root_);
     app::Home home(root_);
     user_ = app::sign_up(home, "alice", "correct horse battery");
@@ -42,7 +42,7 @@ class LeaseRace : public ::testing::Test {
   }
   void TearDown() override { std::filesystem::remove_all(root_); }
 
-  static std::string name(int p) { return "p" + std::to_string(p); }
+  static std::string name(int p) { return std::string("p").append(std::to_string(p)); }
   storage::Project project(app::Home& home, int p) const { return storage::Projects(home.workspace(), user_).get(name(p)); }
 
   std::filesystem::path root_;
@@ -57,7 +57,7 @@ TEST_F(LeaseRace, HeartbeatsRacingSweepsKeepEveryLiveLeaseAndSweepTheDeadOne) {
   {
     app::Home home(root_);
     for (int p = 0; p < kProjects; ++p) {
-      owners.push_back(storage::owner_text(storage::ServerThread{{"another-boot", "1", 4000 + p}, "web-" + std::to_string(p)}));
+      owners.push_back(storage::owner_text(storage::ServerThread{{"another-boot", "1", 4000 + p}, std::string("web-") + std::to_string(p)}));
       ids.push_back(storage::Designs(home.workspace(), project(home, p)).start({"fsm", "chocolate", 1, owners.back()}).id);
     }
   }

@@ -43,7 +43,7 @@ std::string end_of(const std::string& stream) {
 }
 
 TEST(WebConcurrency, ABackgroundDesignRunsWatchersAndPollersMeetAndTheServerStopsCleanly) {
-  const auto root = std::filesystem::temp_directory_path() / ("sd-web-concurrency-" + std::to_string(::getpid()));
+  const auto root = std::filesystem::temp_directory_path() / (std::string("sd-web-concurrency-") + std::to_string(::getpid()));
   std::filesystem::remove_all(root);
   {
     app::Home home(root / "home");
@@ -75,7 +75,7 @@ TEST(WebConcurrency, ABackgroundDesignRunsWatchersAndPollersMeetAndTheServerStop
     threads.emplace_back([&, t] {
       const bool alices = t < kTabs;
       WebClient tab(server->port(), alices ? alice : bob);
-      const Answer s = tab.stream("/api/runs/" + std::to_string((alices ? a : b).body.at("id").get<std::int64_t>()) + "/stream");
+      const Answer s = tab.stream(std::string("/api/runs/") + std::to_string((alices ? a : b).body.at("id").get<std::int64_t>()) + "/stream");
       seen[t] = s.status == 200 ? s.text : std::to_string(s.status);
       --watching;
     });
