@@ -28,7 +28,7 @@ SD_VECTOR_CLONES double body_on_segment(const double* x, const double* y, int be
     const double cx = x[k] - ax, cy = y[k] - ay;
     const double along = cx * abx + cy * aby;
     const double cross = cx * aby - cy * abx;
-    hit = (along > 0.0) & (along < len2) & (cross * cross < line_limit) ? 1.0 : hit;
+    hit = ((along > 0.0) & (along < len2) & (cross * cross < line_limit)) ? 1.0 : hit;
   }
   return hit;
 }
