@@ -16,6 +16,7 @@ packages=(
   openmpi-bin libopenmpi-dev  # designs on MPI ranks (mpirun -np N swarmdesign ...)
   slurm-client  # cluster projects submit designs with sbatch from a login node
   slurmctld slurmd munge openssh-server  # the cluster tests start a one-node Slurm and an sshd
+  clang libclang-rt-14-dev  # scripts/sanitizers.sh: ASan, UBSan, TSan and libFuzzer runtimes
 )
 # Node.js and npm bundle the web app's front end; a machine that has them already keeps its own.
 if ! command -v npm >/dev/null 2>&1; then packages+=(nodejs npm); fi

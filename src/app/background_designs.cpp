@@ -33,6 +33,13 @@ StartedDesign BackgroundDesigns::start(Home& home, const storage::User& user, co
   request.files = FileScope::own_projects(home, user);  // a server's user names only their own files
   // Refuses a project whose design still runs (here or in another process) before any change.
   auto design = std::make_shared<ProjectDesign>(start_project_design(home, user, request));
+  // Resumed the moment its stopped job released it, the design may still have that job's
+  // thread winding down (reap left it): it no longer touches the design, so wait for it here
+  // rather than lose the new thread to a clash of ids.
+  if (const auto old = jobs_.find(design->design.id); old != jobs_.end()) {
+    old->second->thread.join();
+    jobs_.erase(old);
+  }
   auto job = std::make_unique<Job>();
   Job* j = job.get();
   j->project_id = design->project.id;

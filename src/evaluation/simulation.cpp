@@ -39,8 +39,8 @@ void Simulation::step() {
   for (int i = 0; i < swarm_.size; ++i) {
     const std::uint8_t in = controller_.inputs_of_next_step(i);
     swarm_.demand[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(
-        (in & kProximityInput ? SwarmState::kDemandProximity : 0) | (in & kLightInput ? SwarmState::kDemandLight : 0) |
-        (in & kCameraInput ? SwarmState::kDemandCamera : 0));
+        ((in & kProximityInput) ? SwarmState::kDemandProximity : 0) | ((in & kLightInput) ? SwarmState::kDemandLight : 0) |
+        ((in & kCameraInput) ? SwarmState::kDemandCamera : 0));
   }
   sense(m.arena, m.robot, swarm_, rng_, sensors_);
   const double wheel_noise = m.robot.wheel_noise;
