@@ -1,6 +1,7 @@
-// Experiment protocols as a user writes them (JSON, comments allowed, as read_protocol_file
-// reads them). A JSON syntax error and ProtocolError are the rejections. A protocol that
-// reads must write (to_json) a document that reads back to the same document.
+// Experiment protocols as a user writes them (JSON, comments allowed), read by
+// parse_protocol_text as read_protocol_file reads a file. ProtocolError is the rejection (a
+// JSON syntax error or a number no double holds included). A protocol that reads must write
+// (to_json) a document that reads back to the same document.
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
@@ -13,15 +14,9 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
-  nlohmann::json document;
-  try {
-    document = nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true);
-  } catch (const nlohmann::json::parse_error&) {
-    return 0;
-  }
   sd::experiments::Protocol protocol;
   try {
-    protocol = sd::experiments::protocol_from_json(document);
+    protocol = sd::experiments::parse_protocol_text(text, "fuzz.json");
   } catch (const sd::experiments::ProtocolError&) {
     return 0;
   } catch (const std::exception& e) {

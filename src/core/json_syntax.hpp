@@ -28,4 +28,13 @@ std::string json_syntax_error(const ParseError& error, std::string_view text) {
   return said + " (line " + std::to_string(line) + ", column " + std::to_string(column) + ")";
 }
 
+/// "number overflow parsing '1e999'": nlohmann reports a number too large for a double as
+/// out_of_range (406) rather than parse_error, so every reader of user text catches both.
+template <class OutOfRange>
+std::string json_number_error(const OutOfRange& error) {
+  const std::string_view message = error.what();
+  const std::size_t begin = message.find("] ");
+  return std::string(begin == std::string_view::npos ? message : message.substr(begin + 2));
+}
+
 }  // namespace sd

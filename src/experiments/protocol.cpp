@@ -216,10 +216,20 @@ Protocol read_protocol_file(const std::string& path) {
   } catch (const FileReadError& e) {
     throw ProtocolError(e.what());
   }
+  return parse_protocol_text(text, path);
+}
+
+Protocol parse_protocol_text(const std::string& text, const std::string& path) {
+  nlohmann::json document;
   try {
-    return protocol_from_json(nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true));
+    document = nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true);
   } catch (const nlohmann::json::parse_error& e) {
     throw ProtocolError(path + ": not a JSON document: " + json_syntax_error(e, text));
+  } catch (const nlohmann::json::out_of_range& e) {
+    throw ProtocolError(path + ": not a JSON document: " + json_number_error(e));
+  }
+  try {
+    return protocol_from_json(document);
   } catch (const ProtocolError& e) {
     throw ProtocolError(path + ": " + e.what());
   }

@@ -301,6 +301,8 @@ Mission parse_mission(const std::string& json_text, const std::string& source, c
     document = json::parse(json_text, nullptr, true, /*ignore_comments=*/true);
   } catch (const json::parse_error& e) {
     throw MissionError("not valid JSON: " + json_syntax_error(e, json_text));
+  } catch (const json::out_of_range& e) {
+    throw MissionError("not valid JSON: " + json_number_error(e));
   }
   const Field root(document, "");
   root.only({"name", "title", "origin", "description", "duration", "robots", "arena", "start", "robot", "arrest", "events", "objective", "argos",

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/json_syntax.hpp"
 #include "core/math.hpp"
 #include "modules/arlequin_builtin_weights.hpp"
 #include "simulator/epuck.hpp"
@@ -77,6 +78,8 @@ Weights weights_from_json(std::string_view json_text, std::string_view source) {
     doc = nlohmann::json::parse(json_text, nullptr, true, true);
   } catch (const nlohmann::json::parse_error& e) {
     throw std::runtime_error(where + ": not JSON (" + e.what() + ")");
+  } catch (const nlohmann::json::out_of_range& e) {
+    throw std::runtime_error(where + ": not JSON (" + json_number_error(e) + ")");
   }
   Weights w{};
   const char* rows[] = {"left", "right"};

@@ -8,6 +8,7 @@
 
 #include "core/bounded_file.hpp"
 #include "core/fnv.hpp"
+#include "core/json_syntax.hpp"
 #include "modules/arlequin_builtin_weights.hpp"
 #include "modules/arlequin_demiurge.hpp"
 
@@ -31,6 +32,8 @@ Machinery machinery_from_profile(std::string_view json_text, const std::string& 
     doc = nlohmann::json::parse(json_text, nullptr, true, true);
   } catch (const nlohmann::json::parse_error& e) {
     throw std::runtime_error(where + ": not JSON (" + e.what() + ")");
+  } catch (const nlohmann::json::out_of_range& e) {
+    throw std::runtime_error(where + ": not JSON (" + json_number_error(e) + ")");
   }
   const auto* m = doc.is_object() && doc.contains("machinery") ? &doc["machinery"] : nullptr;
   if (m && m->is_string() && *m == "demiurge") return Machinery::Demiurge;

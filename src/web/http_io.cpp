@@ -27,6 +27,8 @@ nlohmann::json read_json_body(const httplib::Request& request) {
     body = nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
     throw app::InvalidRequest("the request body is not JSON: " + json_syntax_error(e, text));
+  } catch (const nlohmann::json::out_of_range& e) {
+    throw app::InvalidRequest("the request body is not JSON: " + json_number_error(e));
   }
   if (!body.is_object()) throw app::InvalidRequest("the request body must be a JSON object");
   return body;

@@ -81,6 +81,17 @@ std::string error_of(const json& document) {
   return "(accepted)";
 }
 
+// Found by fuzz_protocol: a number no double holds is nlohmann's out_of_range, which escaped
+// the file reader (it caught only parse_error) and ended `experiment --file` in terminate.
+TEST(experiments_Protocol, ANumberTooLargeForADoubleIsAProtocolError) {
+  try {
+    parse_protocol_text(R"({"name":"p","missions":[{"mission":"aac","budget":1e3082001}]})", "p.json");
+    ADD_FAILURE() << "accepted";
+  } catch (const ProtocolError& e) {
+    EXPECT_EQ(std::string(e.what()), "p.json: not a JSON document: number overflow parsing '1e3082001'");
+  }
+}
+
 TEST(experiments_Protocol, MalformedFieldsAreNamedByTheirPath) {
   const json good = json::parse(R"({"name": "mine", "missions": [{"mission": "aac", "budget": 1000,
       "conditions": [{"name": "a", "architectures": ["fsm"], "flavours": ["chocolate"]}]}]})");

@@ -250,6 +250,8 @@ TEST(ArlequinWeights, DocumentsAreReadExactlyAndMalformedOnesNamed) {
     return std::string("no error");
   };
   EXPECT_NE(message("{").find("f.json: not JSON"), std::string::npos);
+  // Found by fuzz_weights: a number no double holds escaped as nlohmann's out_of_range.
+  EXPECT_NE(message(R"({"weights": {"left": [2.9061e3087]}})").find("f.json: not JSON (number overflow"), std::string::npos);
   EXPECT_NE(message("{\"weights\": {\"left\": []}}").find("weights.left must be an array of 25"), std::string::npos);
   std::ostringstream no_right, bad_right;
   no_right << R"({"weights": {"left": )" << left << "]}}";
