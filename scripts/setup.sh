@@ -17,6 +17,7 @@ packages=(
   slurm-client  # cluster projects submit designs with sbatch from a login node
   slurmctld slurmd munge openssh-server  # the cluster tests start a one-node Slurm and an sshd
   clang libclang-rt-14-dev  # scripts/sanitizers.sh: ASan, UBSan, TSan and libFuzzer runtimes
+  clang-tidy  # scripts/tidy.sh, with the repository's .clang-tidy
 )
 # Node.js and npm bundle the web app's front end; a machine that has them already keeps its own.
 if ! command -v npm >/dev/null 2>&1; then packages+=(nodejs npm); fi

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Sets everything up (scripts/setup.sh) and runs the whole test suite with CTest.
 #   scripts/test.sh          everything (what CI runs), one stage after the other:
+#                              clang-tidy over src/ (scripts/tidy.sh, .clang-tidy),
 #                              the Release suite (build/), then the suite under sanitizers
 #                              (scripts/sanitizers.sh: ASan+UBSan in build-asan, TSan in build-tsan)
 #   scripts/test.sh --fast   the unit tests only (CTest label `unit`), on an existing build:
@@ -11,6 +12,7 @@ cd "$(dirname "$0")/.."
 case "${1:-}" in
   "")
     ./scripts/setup.sh
+    ./scripts/tidy.sh
     ctest --test-dir build --output-on-failure -j "$(nproc)" --timeout 900
     ./scripts/sanitizers.sh
     ;;
@@ -23,7 +25,7 @@ case "${1:-}" in
     ctest --test-dir build --output-on-failure -j "$(nproc)" --timeout 900 -L unit
     ;;
   -h|--help)
-    sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//'
+    sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'
     ;;
   *)
     echo "test.sh: unknown option '$1' (see scripts/test.sh --help)" >&2

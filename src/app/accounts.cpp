@@ -26,7 +26,7 @@ storage::User authenticate_counted(Home& home, const std::string& name, const st
                                        std::to_string(wait) + " s",
                                    wait);
   try {
-    const storage::User user = storage::authenticate(db, name, password);
+    storage::User user = storage::authenticate(db, name, password);
     attempts.succeeded(name);
     return user;
   } catch (const AccessDenied&) {

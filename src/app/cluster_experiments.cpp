@@ -108,6 +108,7 @@ ClusterExperimentSubmission submit_cluster_experiment(Home& home, const storage:
   const std::string planned = out.project.cluster->workdir_or_default() + "/" + user.name + "/" + out.project.name +
                               "/experiment-" + out.experiment.name;
   std::vector<std::int64_t> tasks;
+  tasks.reserve(tasks.size() + to_make.size());
   for (const auto& d : to_make) tasks.push_back(d.id);
   try {
     jobs.array_submitted(out.experiment.id, "", planned, settings_text(given), tasks);

@@ -16,6 +16,7 @@ std::vector<double> score_seeds(const Mission& mission, const ControlSoftware& s
   std::unique_ptr<Evaluator> own;
   Evaluator& evaluator = options.evaluator ? *options.evaluator : *(own = make_evaluator(options.threads));
   std::vector<EvaluationTask> tasks;
+  tasks.reserve(tasks.size() + seeds.size());
   for (const auto s : seeds) tasks.push_back({&software, s, 0});
   const std::size_t batch = options.progress ? static_cast<std::size_t>(std::max(1, evaluator.workers()) * 4) : tasks.size();
   for (std::size_t start = 0; start < tasks.size(); start += batch) {

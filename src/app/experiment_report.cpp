@@ -182,6 +182,7 @@ json friedman_document(const Analysis& a) {
   json blocks = json::array();
   for (const MissionInfo& m : a.missions) {
     std::vector<double> row;
+    row.reserve(row.size() + common.size());
     for (const auto& c : common) row.push_back(statistics::median(a.cell(m.key, c)->scores()));
     values.push_back(std::move(row));
     maximise.push_back(m.maximise);

@@ -53,6 +53,7 @@ class AutoMoDe final : public DesignMethod {
   std::vector<ControlSoftware> samples(const experiments::Condition& c, Rng& rng) const override {
     const auto space = design::build_design_space(condition_space(c).first);
     std::vector<ControlSoftware> out;
+    out.reserve(4);
     for (int i = 0; i < 4; ++i) out.push_back(parse_control_software(space.render(design::sample_uniform(space, rng))));
     return out;
   }

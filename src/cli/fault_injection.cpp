@@ -10,7 +10,7 @@ namespace sd::cli {
 std::int64_t kill_at_checkpoint() {
   static const std::int64_t at = [] {
     const char* text = std::getenv("SWARMDESIGN_KILL_AT_CHECKPOINT");
-    return text ? std::atoll(text) : 0;
+    return text ? std::strtoll(text, nullptr, 10) : 0;  // not a number: 0, no kill
   }();
   return at;
 }

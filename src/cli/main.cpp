@@ -46,14 +46,23 @@ void print_error(const std::string& message) {
 int run_command(int argc, char** argv, sd::cli::Context& context);
 
 int main(int argc, char** argv) {
-  sd::cli::Context context;
+  // run_command reports every error of a command; this catches what escapes before or after
+  // it (MPI's set-up, the context), so nothing ends in std::terminate without a line.
+  try {
+    sd::cli::Context context;
 #ifdef SWARMDESIGN_WITH_MPI
-  // Under mpirun every rank runs this program: rank 0 runs the command, the others evaluate.
-  const auto mpi = sd::mpi::Session::join_if_launched(argc, argv);
-  if (mpi && !mpi->is_root()) return mpi->serve();
-  if (mpi) context.mpi_ranks = mpi->size();
+    // Under mpirun every rank runs this program: rank 0 runs the command, the others evaluate.
+    const auto mpi = sd::mpi::Session::join_if_launched(argc, argv);
+    if (mpi && !mpi->is_root()) return mpi->serve();
+    if (mpi) context.mpi_ranks = mpi->size();
 #endif
-  return run_command(argc, argv, context);
+    return run_command(argc, argv, context);
+  } catch (const std::exception& e) {
+    print_error(e.what());
+  } catch (...) {
+    print_error("unknown failure");
+  }
+  return 1;
 }
 
 int run_command(int argc, char** argv, sd::cli::Context& context) {
@@ -75,7 +84,7 @@ int run_command(int argc, char** argv, sd::cli::Context& context) {
   app.fallthrough(false);
   sd::cli::register_all_commands(app, context);
 
-  if (!args.empty() && args.front().rfind("-", 0) != 0) {
+  if (!args.empty() && args.front().rfind('-', 0) != 0) {
     bool known = false;
     for (const CLI::App* sub : app.get_subcommands({}))
       known = known || sub->check_name(args.front());
@@ -86,7 +95,7 @@ int run_command(int argc, char** argv, sd::cli::Context& context) {
   }
   // Only the commands that read control software (they all have --config-file) may be given
   // it: any other would ignore it and run, e.g. a whole design.
-  if (context.has_control_software() && !args.empty() && args.front().rfind("-", 0) != 0) {
+  if (context.has_control_software() && !args.empty() && args.front().rfind('-', 0) != 0) {
     const CLI::App* command = nullptr;
     for (const CLI::App* sub : app.get_subcommands({}))
       if (sub->check_name(args.front())) command = sub;
@@ -97,7 +106,7 @@ int run_command(int argc, char** argv, sd::cli::Context& context) {
     }
   }
   // CLI11 would answer "A subcommand is required" to `swarmdesign --bogus`: name the option.
-  if (!args.empty() && args.front().rfind("-", 0) == 0 && !app.get_option_no_throw(args.front())) {
+  if (!args.empty() && args.front().rfind('-', 0) == 0 && !app.get_option_no_throw(args.front())) {
     print_error("unknown option '" + args.front() + "' (see --help)");
     return 2;
   }

@@ -22,7 +22,9 @@ void ProgressLine::log(const std::string& text) {
   if (mode_ != Mode::Log) return;
   const std::time_t now = std::time(nullptr);
   char stamp[32];
-  std::strftime(stamp, sizeof stamp, "%Y-%m-%d %H:%M:%S", std::localtime(&now));
+  std::tm local{};
+  localtime_r(&now, &local);  // not localtime: a design's jobs log from several threads
+  std::strftime(stamp, sizeof stamp, "%Y-%m-%d %H:%M:%S", &local);
   std::fprintf(stderr, "%s  %s\n", stamp, text.c_str());
   std::fflush(stderr);
 }

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <system_error>
 #include <cerrno>
 #include <chrono>
 #include <cstdlib>
@@ -109,6 +110,7 @@ std::optional<std::string> find_program(const std::string& name, const std::stri
 
 std::vector<char*> pointers_to(std::vector<std::string>& strings) {
   std::vector<char*> pointers;
+  pointers.reserve(strings.size() + 1);
   for (std::string& s : strings) pointers.push_back(s.data());
   pointers.push_back(nullptr);
   return pointers;
@@ -319,14 +321,14 @@ CommandResult run_command(const std::vector<std::string>& argv, const CommandOpt
   Fd out_file;
   if (!options.stdout_file.empty()) {
     out_file = Fd(::open(options.stdout_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600));
-    if (!out_file.open()) return not_started(126, "cannot create " + options.stdout_file.string() + ": " + std::strerror(errno));
+    if (!out_file.open()) return not_started(126, "cannot create " + options.stdout_file.string() + ": " + std::generic_category().message(errno));
   }
 
   const SigpipeBlocked sigpipe_blocked;
   Spawned spawned = spawn(*program, argv, std::move(environment), out_file);
   out_file.reset();
   if (spawned.error != 0)
-    return not_started(spawned.error == ENOENT ? 127 : 126, "cannot run " + argv.front() + ": " + std::strerror(spawned.error));
+    return not_started(spawned.error == ENOENT ? 127 : 126, "cannot run " + argv.front() + ": " + std::generic_category().message(spawned.error));
   Child child(spawned.pid);
   CommandResult result;
   exchange(child, spawned.streams, options, result);

@@ -24,8 +24,12 @@ std::string this_host_name() {
 }
 
 std::string current_user_name() {
-  const passwd* entry = ::getpwuid(::geteuid());
-  return entry && entry->pw_name ? entry->pw_name : "";
+  // getpwuid_r: the server's threads may ask at once (getpwuid shares one buffer).
+  passwd entry{};
+  passwd* found = nullptr;
+  char buffer[4096];
+  if (::getpwuid_r(::geteuid(), &entry, buffer, sizeof buffer, &found) != 0 || !found || !found->pw_name) return "";
+  return found->pw_name;
 }
 
 bool names_this_machine(const std::string& host) {
@@ -61,7 +65,7 @@ std::string ssh_error_line(const std::string& err) {
   std::size_t start = 0;
   while (start < err.size()) {
     const std::size_t end = std::min(err.find('\n', start), err.size());
-    const std::string line = first_line(err.substr(start, end - start));
+    std::string line = first_line(err.substr(start, end - start));
     if (!line.empty() && line.rfind("Warning: Permanently added", 0) != 0) return line;
     start = end + 1;
   }

@@ -38,7 +38,7 @@ class TemporaryFile {
   TemporaryFile() {
     std::string pattern = (fs::temp_directory_path() / "swarmdesign-fetch-XXXXXX").string();
     const int fd = ::mkstemp(pattern.data());
-    if (fd < 0) throw ClusterError("cannot create a temporary file in " + fs::temp_directory_path().string() + ": " + std::strerror(errno));
+    if (fd < 0) throw ClusterError("cannot create a temporary file in " + fs::temp_directory_path().string() + ": " + std::generic_category().message(errno));
     ::close(fd);
     path_ = pattern;
   }
@@ -62,7 +62,7 @@ void write_here(const Shell& shell, const std::string& path, const std::string& 
   std::ofstream out(file, std::ios::binary | std::ios::trunc);
   out.write(content.data(), static_cast<std::streamsize>(content.size()));
   out.close();
-  if (!out) fail("write", path, shell, std::strerror(errno));
+  if (!out) fail("write", path, shell, std::generic_category().message(errno));
   if (executable) {
     fs::permissions(file, fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec, fs::perm_options::add, error);
     if (error) fail("make executable", path, shell, error.message());
@@ -78,9 +78,9 @@ std::optional<std::string> read_here(const Shell& shell, const std::string& path
   }
   if (fs::is_directory(file, error)) fail("read", path, shell, "it is a folder");
   std::ifstream in(file, std::ios::binary);
-  if (!in) fail("read", path, shell, std::strerror(errno));
+  if (!in) fail("read", path, shell, std::generic_category().message(errno));
   std::string content{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (in.bad()) fail("read", path, shell, std::strerror(errno));
+  if (in.bad()) fail("read", path, shell, std::generic_category().message(errno));
   return content;
 }
 

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <system_error>
 #include <cerrno>
 #include <cstring>
 
@@ -54,7 +55,7 @@ FileText read_bounded_file(const std::filesystem::path& path, const std::string&
   if (file.fd < 0) {
     const int error = errno;
     if (allowed) throw FileReadError(FileProblem::Missing, named + ": no such file");
-    throw FileReadError(FileProblem::Missing, "cannot read " + named + ": " + std::strerror(error));
+    throw FileReadError(FileProblem::Missing, "cannot read " + named + ": " + std::generic_category().message(error));
   }
   FileText result{opened_path(file.fd), {}};
   if (allowed && (result.real_path.empty() || !allowed(result.real_path)))
@@ -73,7 +74,7 @@ FileText read_bounded_file(const std::filesystem::path& path, const std::string&
   for (;;) {
     const ssize_t n = ::read(file.fd, chunk.data(), chunk.size());
     if (n < 0 && errno == EINTR) continue;
-    if (n < 0) throw FileReadError(FileProblem::Unreadable, "cannot read " + named + ": " + std::strerror(errno));
+    if (n < 0) throw FileReadError(FileProblem::Unreadable, "cannot read " + named + ": " + std::generic_category().message(errno));
     if (n == 0) break;
     result.text.append(chunk.data(), static_cast<std::size_t>(n));
     if (result.text.size() > max_bytes) throw too_large();

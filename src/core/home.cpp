@@ -17,7 +17,11 @@ std::string environment(const char* name) {
 
 std::filesystem::path user_home_directory() {
   if (auto home = environment("HOME"); !home.empty()) return home;
-  if (const passwd* entry = getpwuid(getuid()); entry && entry->pw_dir) return entry->pw_dir;
+  // getpwuid_r: threads may ask at once (getpwuid shares one buffer).
+  passwd entry{};
+  passwd* found = nullptr;
+  char buffer[4096];
+  if (getpwuid_r(getuid(), &entry, buffer, sizeof buffer, &found) == 0 && found && found->pw_dir) return found->pw_dir;
   throw std::runtime_error("cannot find your home directory; set SWARMDESIGN_HOME");
 }
 }  // namespace

@@ -238,11 +238,13 @@ inline double atan2(double y, double x) {
   const bool y_negative = std::signbit(y);
   if (!(ax > 0.0 && ay > 0.0 && ax < kInf && ay < kInf)) {  // zeros and infinities: rare
     double v;
+    // NOLINTBEGIN(bugprone-branch-clone): fdlibm's special cases, listed as it lists them
     if (ay == 0.0) v = std::signbit(x) ? kPiHi : 0.0;
     else if (ax == 0.0) v = kPio2Hi;
     else if (ax == kInf && ay == kInf) v = std::signbit(x) ? 3.0 * kPiHi / 4.0 : kPiHi / 4.0;
     else if (ax == kInf) v = std::signbit(x) ? kPiHi : 0.0;
     else v = kPio2Hi;
+    // NOLINTEND(bugprone-branch-clone)
     return negate_if(y_negative, v);
   }
   // The octant's angle in [0, pi/4] from the smaller over the larger coordinate, then moved

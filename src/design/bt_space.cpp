@@ -11,6 +11,7 @@ Parameter constant(std::string name, std::string switch_, std::string value, Con
 }
 std::vector<std::string> ids_of(const std::vector<Module>& modules) {
   std::vector<std::string> ids;
+  ids.reserve(ids.size() + modules.size());
   for (const Module& m : modules) ids.push_back(std::to_string(m.id));
   return ids;
 }

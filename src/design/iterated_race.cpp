@@ -54,7 +54,7 @@ int default_nb_iterations(std::size_t nb_variable) {
 
 int nb_configurations_for(long long current_budget, int iteration, int mu, int each_test, std::size_t n_elites,
                           std::size_t n_old_instances, int new_instances, int cap) {
-  const long long saved = static_cast<long long>(n_elites * n_old_instances);
+  const long long saved = static_cast<long long>(n_elites) * static_cast<long long>(n_old_instances);
   const long long n = std::max<long long>(mu + each_test * std::min(5, iteration),
                                           round_to_next_multiple(static_cast<long long>(n_old_instances) + new_instances, each_test));
   return static_cast<int>(std::min<long long>((current_budget + saved) / n, cap));
@@ -224,6 +224,7 @@ std::vector<int> IteratedRace::sample_new(std::size_t n, const std::vector<int>&
     fresh = sample_model(space_, s.elites, s.configurations, s.model, n, rng_, not_rejected);
     {
       std::vector<ConfigRecord> race_set;
+      race_set.reserve(race_set.size() + elite_ids.size());
       for (int id : elite_ids) race_set.push_back(s.configurations[id]);
       int next = s.configurations.next_id();
       for (const auto& f : fresh) race_set.push_back({next++, f.parent, f.config});
@@ -244,6 +245,7 @@ std::vector<int> IteratedRace::sample_new(std::size_t n, const std::vector<int>&
     }
   }
   std::vector<int> ids;
+  ids.reserve(ids.size() + fresh.size());
   for (auto& f : fresh) ids.push_back(s.configurations.add(std::move(f.config), f.parent));
   return ids;
 }

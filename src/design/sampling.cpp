@@ -168,6 +168,7 @@ std::vector<SampledConfiguration> sample_model(const ParameterSpace& space, cons
                                                Rng& rng, const Acceptable& acceptable) {
   if (elites.empty()) throw std::invalid_argument("sample_model needs at least one elite");
   std::vector<double> weights;
+  weights.reserve(weights.size() + elites.size());
   for (const Elite& e : elites) weights.push_back(e.weight);
   std::vector<SampledConfiguration> out;
   out.reserve(n);

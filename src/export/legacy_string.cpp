@@ -94,6 +94,7 @@ Flavour resolve_flavour(const std::vector<UsedModule>& modules, const ExportOpti
   for (const UsedModule& m : modules) flavours.insert(module_flavour(m));
   if (flavours.size() == 1) return *flavours.begin();
   std::vector<std::string> all;
+  all.reserve(all.size() + modules.size());
   for (const UsedModule& m : modules) all.push_back(module_text(m));
   throw ExportRefused("the control software mixes flavours, and every ARGoS3-AutoMoDe code base reads one flavour's "
                       "modules only: " + joined(all));

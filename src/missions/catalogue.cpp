@@ -45,6 +45,7 @@ std::vector<MissionSummary> list_missions() {
     }
   }
   std::vector<MissionSummary> result;
+  result.reserve(result.size() + by_name.size());
   for (auto& [name, s] : by_name) result.push_back(std::move(s));
   return result;
 }

@@ -33,7 +33,8 @@ struct LedArena {
 
   bool empty() const { return blocks.empty(); }
   const Block& at(int side, int block) const {
-    return blocks[static_cast<std::size_t>((side - 1) * blocks_per_side + (block - 1))];
+    const int index = (side - 1) * blocks_per_side + (block - 1);
+    return blocks[static_cast<std::size_t>(index)];
   }
 };
 

@@ -32,7 +32,8 @@ void GridExplorationScore::post_step(const SwarmState& swarm, int /*tick*/, Rng&
     if (!(u > -1.0 && u < n && v > -1.0 && v < n)) continue;  // outside the grid (or NaN)
     // Truncation towards zero, not floor: the original's int conversion, so (-1, 0) -> 0.
     const int column = static_cast<int>(u), row = static_cast<int>(v);
-    ages_[static_cast<std::size_t>(row * n + column)] = 0;
+    const int cell = row * n + column;
+    ages_[static_cast<std::size_t>(cell)] = 0;
   }
   long long sum = 0;
   for (long long& a : ages_) {

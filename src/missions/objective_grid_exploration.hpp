@@ -34,7 +34,10 @@ class GridExplorationScore {
   void post_step(const SwarmState& swarm, int tick, Rng& rng);
   double value() const { return total_ / static_cast<double>(ages_.size()) * params_->scale; }
   /// The age of cell (column, row) after the last tick.
-  long long age(int column, int row) const { return ages_[static_cast<std::size_t>(row * params_->cells + column)]; }
+  long long age(int column, int row) const {
+    const int cell = row * params_->cells + column;
+    return ages_[static_cast<std::size_t>(cell)];
+  }
 
  private:
   const GridExplorationObjective* params_;

@@ -28,6 +28,7 @@ Region JitteredArc::support() const {
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
   };
   grow(hi_angle);
+  // NOLINTNEXTLINE(cert-flp30-c): at most five quarter turns; changing the sum would move starts
   for (double a = std::ceil(lo_angle / (kPi / 2)) * (kPi / 2); a < hi_angle; a += kPi / 2) grow(a);
   const Vec2 margin{jitter, jitter};
   lo = lo - margin;

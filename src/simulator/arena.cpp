@@ -126,6 +126,7 @@ GridFrame GridFrame::covering(Vec2 lo, Vec2 hi, double cells_per_metre) {
 double GridFrame::half_diagonal() const { return cell_size() * std::sqrt(0.5); }
 
 Vec2 GridFrame::center(std::size_t cell) const {
+  // NOLINTNEXTLINE(bugprone-integer-division): cell / width is the row, an integer
   return origin + Vec2{(static_cast<double>(cell % width) + 0.5) * cell_size(), (static_cast<double>(cell / width) + 0.5) * cell_size()};
 }
 

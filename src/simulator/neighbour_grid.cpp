@@ -35,7 +35,7 @@ void NeighbourGrid::build(const double* x, const double* y, int robots, double c
   }
   // Cells as small as asked, unless that would make more cells than the buffers hold.
   const double width = max_x - min_x_, height = max_y - min_y_;
-  for (;; cell *= 1.25) {
+  for (;; cell *= 1.25) {  // NOLINT(cert-flp30-c): grows until the cells fit; ends by its break
     inverse_cell_ = 1.0 / cell;
     columns_ = static_cast<int>(width * inverse_cell_) + 1;
     rows_ = static_cast<int>(height * inverse_cell_) + 1;

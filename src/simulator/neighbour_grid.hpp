@@ -32,9 +32,9 @@ class NeighbourGrid {
   void for_each_run(double lo_x, double lo_y, double hi_x, double hi_y, Visit&& visit) const {
     const int first_column = column(lo_x), last_column = column(hi_x);
     for (int r = row(lo_y), last_row = row(hi_y); r <= last_row; ++r) {
-      const int base = r * columns_;
-      const int begin = cell_start_[static_cast<std::size_t>(base + first_column)];
-      const int end = cell_start_[static_cast<std::size_t>(base + last_column + 1)];
+      const std::size_t base = static_cast<std::size_t>(r) * static_cast<std::size_t>(columns_);
+      const int begin = cell_start_[base + static_cast<std::size_t>(first_column)];
+      const int end = cell_start_[base + static_cast<std::size_t>(last_column) + 1];
       if (begin < end) visit(begin, end);
     }
   }

@@ -26,8 +26,9 @@ const Plan& plan() {
     if (!text) return out;
     const std::string s(text);
     const auto colon = s.find(':');
-    out.checkpoint = std::atoll(s.substr(0, colon).c_str());
-    out.write = colon == std::string::npos ? 1 : std::atoll(s.substr(colon + 1).c_str());
+    // Not a number: 0, and the plan is dropped below.
+    out.checkpoint = std::strtoll(s.substr(0, colon).c_str(), nullptr, 10);
+    out.write = colon == std::string::npos ? 1 : std::strtoll(s.substr(colon + 1).c_str(), nullptr, 10);
     if (out.checkpoint < 1 || out.write < 1) out = {};
     return out;
   }();

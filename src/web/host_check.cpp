@@ -28,7 +28,7 @@ bool HostCheck::is_loopback(std::string_view address) {
   return address == "localhost" || address == "::1" || address.rfind("127.", 0) == 0;
 }
 
-HostCheck::HostCheck(const std::string& bound_address, int port, std::vector<std::string> allowed_hosts)
+HostCheck::HostCheck(const std::string& bound_address, int port, const std::vector<std::string>& allowed_hosts)
     : port_(port), any_ip_(!is_loopback(bound_address)) {
   names_ = {"127.0.0.1", "localhost", "[::1]"};
   std::string own = lower(bound_address);

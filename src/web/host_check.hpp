@@ -14,7 +14,7 @@ namespace sd::web {
 class HostCheck {
  public:
   HostCheck() = default;  // answers nothing until made for an address and port
-  HostCheck(const std::string& bound_address, int port, std::vector<std::string> allowed_hosts);
+  HostCheck(const std::string& bound_address, int port, const std::vector<std::string>& allowed_hosts);
 
   bool allows(std::string_view host_header) const;
   /// What it answers, in words, for the server's start message.

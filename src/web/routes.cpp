@@ -36,7 +36,7 @@ void Routes::get(const std::string& pattern, JsonRoute route) {
 }
 
 void Routes::get_raw(const std::string& pattern, RawRoute route) {
-  server_.Get(pattern, [context = &context_, route](const httplib::Request& q, httplib::Response& r) { answer(*context, q, r, false, true, route); });
+  server_.Get(pattern, [context = &context_, route = std::move(route)](const httplib::Request& q, httplib::Response& r) { answer(*context, q, r, false, true, route); });
 }
 
 void Routes::post(const std::string& pattern, JsonRoute route) {
@@ -46,7 +46,7 @@ void Routes::post(const std::string& pattern, JsonRoute route) {
 }
 
 void Routes::post_public(const std::string& pattern, RawRoute route) {
-  server_.Post(pattern, [context = &context_, route](const httplib::Request& q, httplib::Response& r) { answer(*context, q, r, true, false, route); });
+  server_.Post(pattern, [context = &context_, route = std::move(route)](const httplib::Request& q, httplib::Response& r) { answer(*context, q, r, true, false, route); });
 }
 
 }  // namespace sd::web

@@ -22,7 +22,7 @@ namespace sd::web {
 /// What the routes share for the server's lifetime.
 struct WebContext {
   WebContext(std::filesystem::path home_folder, std::filesystem::path web_root_folder, storage::SignInPolicy policy)
-      : home(home_folder), web_root(std::move(web_root_folder)), sign_in(policy), addresses(policy),
+      : home(std::move(home_folder)), web_root(std::move(web_root_folder)), sign_in(policy), addresses(policy),
         passwords(kPasswordChecksAtOnce), designs("web") {}
   static constexpr int kPasswordChecksAtOnce = 4;  // 256 MiB of Argon2id at most
   std::filesystem::path home;
