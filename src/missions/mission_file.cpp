@@ -237,6 +237,26 @@ std::string bounds_text(const std::pair<Vec2, Vec2>& b) {
   return out.str();
 }
 
+/// Walls and floor patches within 10 m of the origin: an e-puck arena is a few metres across,
+/// and the compiled arena has cells of 2 cm over the walls' and patches' box, so a wall 12 km
+/// out (a typo, or a file made to hurt) would ask for terabytes. Found by fuzz_mission.
+constexpr double kArenaReach = 10.0;
+
+bool within_reach(const std::pair<Vec2, Vec2>& b) {
+  return b.first.x >= -kArenaReach && b.first.y >= -kArenaReach && b.second.x <= kArenaReach && b.second.y <= kArenaReach;
+}
+
+void check_arena_extent(const Field& root, const Mission& m) {
+  if (const auto walls = walls_bounds(m.arena); walls && !within_reach(*walls))
+    root.at("arena").at("walls").fail("reach beyond 10 m from the origin (they span " + bounds_text(*walls) +
+                                      "); an e-puck arena is a few metres across");
+  for (std::size_t i = 0; i < m.arena.floor_patches.size(); ++i) {
+    const auto bounds = m.arena.floor_patches[i].region.bounds();
+    if (!within_reach(bounds))
+      root.at("arena").at("floor").at("patches").at(i).fail("reaches beyond 10 m from the origin (" + bounds_text(bounds) + ")");
+  }
+}
+
 /// A floor patch nobody can drive on is a mistake in the file (a sign or a unit wrong).
 void check_patches_touch_arena(const Field& root, const Mission& m) {
   const auto walls = walls_bounds(m.arena);
@@ -336,6 +356,7 @@ Mission parse_mission(const std::string& json_text, const std::string& source, c
   m.objective = read_objective(root.at("objective"));
   if (root.has("argos")) read_argos(root.at("argos"), m);
   resolve_event_names(root.at("objective"), m);
+  check_arena_extent(root, m);
   check_patches_touch_arena(root, m);
   check_start_inside_walls(root, m);
   check_swarm_fits(root, m);

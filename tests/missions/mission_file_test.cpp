@@ -96,6 +96,10 @@ TEST(MissionFile, EveryMalformedFieldIsNamed) {
   expect_error(replace(kValid, "\"duration\": 10, ", ""), "duration: missing field");
   expect_error(replace(kValid, "\"robots\": 2", "\"robots\": 2.5"), "robots: expected an integer");
   expect_error(replace(kValid, "\"robots\": 2", "\"robots\": 500"), "robots: 500 robots do not fit");
+  // Found by fuzz_mission: a wall 12 km out made the compiled floor ask for terabytes.
+  expect_error(replace(kValid, "\"apothem\": 0.5", "\"apothem\": 12231"), "arena.walls: reach beyond 10 m from the origin");
+  expect_error(replace(kValid, "\"arena\": {", "\"arena\": {\"floor\": {\"patches\": [{\"region\": {\"circle\": {\"center\": [0, 0], \"radius\": 1e6}}, \"color\": \"black\"}]}, "),
+               "arena.floor.patches[0]: reaches beyond 10 m from the origin");
   expect_error(replace(kValid, "robots_in_region_per_tick", "teleport"), "objective.type: unknown objective type 'teleport'");
   expect_error(replace(kValid, "\"minimize\"", "\"smaller\""), "objective.direction");
   expect_error(replace(kValid, "\"radius\": 0.3", "\"radius\": 0"), "start.circle.radius: must be positive");
