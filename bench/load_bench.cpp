@@ -310,6 +310,7 @@ void read_stream(Load& load, const Session& s, std::int64_t id, int seed, Clock:
   std::string seen;
   bool first = false;
   std::size_t scanned = 0;
+  std::size_t final_at = std::string::npos;  // where `end` (or `failure`) begins, once seen
   const auto r = c->Get(("/api/runs/" + std::to_string(id) + "/stream").c_str(), s.headers(),
                         [&](const char* data, std::size_t n) {
                           seen.append(data, n);
@@ -317,9 +318,12 @@ void read_stream(Load& load, const Session& s, std::int64_t id, int seed, Clock:
                             first = true;
                             load.recorder.ok(kExecFirstFrame, ms_since(posted));
                           }
+                          if (final_at == std::string::npos)
+                            final_at = std::min(seen.find("event: end", scanned), seen.find("event: failure", scanned));
                           scanned = seen.size() < 16 ? 0 : seen.size() - 16;
-                          return seen.find("event: end", scanned) == std::string::npos &&
-                                 seen.find("event: failure", scanned) == std::string::npos;
+                          // Stop once the last event is whole (its blank line): a chunk may end
+                          // between "event: end" and its data, which then was counted an error.
+                          return final_at == std::string::npos || seen.find("\n\n", final_at) == std::string::npos;
                         });
   const std::size_t at = seen.find("event: end\ndata: ");
   if (at == std::string::npos) {
@@ -394,19 +398,17 @@ void monitor_tab(Load& load, const Session& s, const std::string& project, std::
   }
 }
 
-/// Medians of the first and last quarter of the samples after the warm-up; flat when the last
-/// is within 5 % (or 8 MiB) of the first. Medians, because a sample may catch sign-ins'
-/// Argon2id buffers (64 MiB each, freed at once).
+/// The floors (lowest samples) of the first and last quarter after the warm-up; flat when the
+/// last is within 5 % (or 8 MiB) of the first. Floors, because any sample may catch up to four
+/// sign-ins' Argon2id buffers (64 MiB each, freed at once), which swing even a quarter's median
+/// by +-50 MiB; a leak raises the floor, those buffers only what lies above it.
 json rss_verdict(const std::vector<double>& mib, std::size_t warmup) {
   if (mib.size() < warmup + 8) return {{"flat", nullptr}, {"note", "too few samples after the warm-up"}};
   const std::vector<double> judged(mib.begin() + static_cast<long>(warmup), mib.end());
   const std::size_t q = judged.size() / 4;
-  auto median = [](std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-  };
-  const double first = median({judged.begin(), judged.begin() + static_cast<long>(q)});
-  const double last = median({judged.end() - static_cast<long>(q), judged.end()});
+  auto floor_of = [](std::vector<double> v) { return *std::min_element(v.begin(), v.end()); };
+  const double first = floor_of({judged.begin(), judged.begin() + static_cast<long>(q)});
+  const double last = floor_of({judged.end() - static_cast<long>(q), judged.end()});
   const double growth = last - first;
   return {{"first_quarter_mib", first}, {"last_quarter_mib", last}, {"growth_mib", growth},
           {"growth_percent", 100.0 * growth / first}, {"flat", growth <= std::max(0.05 * first, 8.0)}};
@@ -544,7 +546,7 @@ int run(const Options& o) {
     if (v["flat"].is_null())
       std::printf("RSS: %s\n", v["note"].get<std::string>().c_str());
     else
-      std::printf("RSS after %.0f s of warm-up: first quarter %.1f MiB, last quarter %.1f MiB (medians): %+.1f MiB "
+      std::printf("RSS after %.0f s of warm-up: first quarter %.1f MiB, last quarter %.1f MiB (floors): %+.1f MiB "
                   "(%+.1f %%): %s\n",
                   o.warmup, v["first_quarter_mib"].get<double>(), v["last_quarter_mib"].get<double>(),
                   v["growth_mib"].get<double>(), v["growth_percent"].get<double>(), v["flat"].get<bool>() ? "flat" : "GROWS");
