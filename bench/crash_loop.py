@@ -27,6 +27,7 @@ last one) is on the reference's path. Exit status 0 only when, for every kind an
 KILLS kills happened, every database was intact after each, and every resume was identical.
 Standard library only.
 """
+import abc
 import argparse
 import contextlib
 import http.client
@@ -202,7 +203,7 @@ def first_difference(res, ref):
 # ---------------------------------------------------------------------------------------------
 # Running the jobs.
 
-class Job:
+class Job(abc.ABC):
     """One kind of job in one home: set up, started or resumed, watched, killed."""
 
     def __init__(self, binary, home, args):
@@ -233,8 +234,9 @@ class Job:
 
     # start() launches (or resumes) the job; returns when it runs. finished() is None while
     # it runs, True when it ended well; kill() SIGKILLs everything it started.
+    @abc.abstractmethod
     def start(self, extra_env):
-        raise NotImplementedError
+        """Each kind of job (CliDesign, Experiment, WebDesign) says how it starts."""
 
     def finished(self):
         code = self.process.poll()
