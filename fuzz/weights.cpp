@@ -1,6 +1,7 @@
 // EvoStick's documents as Arlequin reads them. The first byte picks what the rest is:
 //   0: a module's weight document (arlequin::weights_from_json; std::runtime_error rejects);
-//   1: EvoStick settings (evostick::settings_from_json; nlohmann::json::exception rejects);
+//   1: EvoStick settings (evostick::settings_from_json; nlohmann::json::exception rejects the
+//      text, std::invalid_argument a field);
 //   2: a module-set folder's module-set.json beside six valid weight documents
 //      (arlequin::load_module_set; std::runtime_error rejects).
 #include <nlohmann/json.hpp>
@@ -47,6 +48,7 @@ void settings(const std::string& text) {
   try {
     (void)sd::evostick::settings_from_json(nlohmann::json::parse(text));
   } catch (const nlohmann::json::exception&) {
+  } catch (const std::invalid_argument&) {
   }
 }
 

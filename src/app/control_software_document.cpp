@@ -3,9 +3,11 @@
 #include <array>
 #include <regex>
 #include <string>
+#include <type_traits>
 
 #include "app/errors.hpp"
 #include "control/config_string.hpp"
+#include "core/json_integer.hpp"
 
 namespace sd::app {
 
@@ -47,14 +49,29 @@ json module_document(const ModuleInstance& instance, ModuleKind kind) {
 }
 
 /// Reads one field, saying where it is when it is missing or of the wrong type.
+/// An integer is range-checked before it is converted: get<int>() on 1e300 is undefined.
 template <typename T>
 T field(const json& object, const char* key, const std::string& where) {
   if (!object.is_object() || !object.contains(key)) throw InvalidRequest(where + "." + key + " is missing");
-  try {
-    return object.at(key).get<T>();
-  } catch (const json::exception&) {
-    throw InvalidRequest(where + "." + key + " has the wrong type");
+  if constexpr (std::is_integral_v<T>) {
+    const auto value = json_integer<T>(object.at(key));
+    if (!value) throw InvalidRequest(where + "." + key + " must be an integer");
+    return *value;
+  } else {
+    try {
+      return object.at(key).get<T>();
+    } catch (const json::exception&) {
+      throw InvalidRequest(where + "." + key + " has the wrong type");
+    }
   }
+}
+
+/// A list field that may be left out (an empty list then).
+json optional_list(const json& object, const char* key, const std::string& where) {
+  if (!object.contains(key)) return json::array();
+  const json& list = object.at(key);
+  if (!list.is_array()) throw InvalidRequest(where + "." + key + " must be a list");
+  return list;
 }
 
 ModuleInstance module_from(const json& doc, ModuleKind kind, const std::string& where) {
@@ -84,7 +101,7 @@ ControlSoftware fsm_from(const json& model) {
     const std::string where = "software.states[" + std::to_string(s) + "]";
     FsmState state;
     state.behaviour = module_from(field<json>(states[s], "behaviour", where), ModuleKind::Behaviour, where + ".behaviour");
-    const json transitions = states[s].contains("transitions") ? states[s].at("transitions") : json::array();
+    const json transitions = optional_list(states[s], "transitions", where);
     for (std::size_t t = 0; t < transitions.size(); ++t) {
       const std::string at = where + ".transitions[" + std::to_string(t) + "]";
       state.transitions.push_back({field<int>(transitions[t], "target", at),
@@ -115,10 +132,13 @@ ControlSoftware bt_from(const json& model) {
       if (node.type == BtNodeType::Action && nodes[n].contains("success"))
         node.success_probability = field<double>(nodes[n], "success", where);
     } else {
-      for (const json& c : field<json>(nodes[n], "children", where)) {
-        if (!c.is_number_integer() || c.get<int>() <= static_cast<int>(n) || c.get<std::size_t>() >= nodes.size())
+      const json children = field<json>(nodes[n], "children", where);
+      if (!children.is_array()) throw InvalidRequest(where + ".children must be a list");
+      for (const json& c : children) {
+        const auto child = json_integer<std::size_t>(c);
+        if (!child || *child <= n || *child >= nodes.size())
           throw InvalidRequest(where + ".children must name later nodes of the list");
-        node.children.push_back(c.get<int>());
+        node.children.push_back(static_cast<int>(*child));
       }
     }
     software.bt.nodes.push_back(std::move(node));

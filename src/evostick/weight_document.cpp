@@ -1,8 +1,11 @@
 #include "evostick/weight_document.hpp"
 
 #include <cstdio>
+#include <limits>
+#include <stdexcept>
 
 #include "control/config_string.hpp"
+#include "core/json_integer.hpp"
 
 namespace sd::evostick {
 
@@ -19,14 +22,53 @@ std::string module_command(const ModuleTraining& module, const Settings& s) {
   return command;
 }
 
-// The settings' fields by their own names, both ways; a missing one throws
-// nlohmann::json::exception naming it.
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Settings, seed, population, evaluations, elites, mutation_sigma, mutation_probability,
-                                   weight_bound, generations)
+// The settings' fields by their own names, both ways.
+nlohmann::json settings_json(const Settings& s) {
+  return {{"seed", s.seed},
+          {"population", s.population},
+          {"evaluations", s.evaluations},
+          {"elites", s.elites},
+          {"mutation_sigma", s.mutation_sigma},
+          {"mutation_probability", s.mutation_probability},
+          {"weight_bound", s.weight_bound},
+          {"generations", s.generations}};
+}
 
-nlohmann::json settings_json(const Settings& s) { return s; }
+namespace {
 
-Settings settings_from_json(const nlohmann::json& j) { return j.get<Settings>(); }
+const nlohmann::json& settings_field(const nlohmann::json& j, const char* key) {
+  if (!j.is_object() || !j.contains(key)) throw std::invalid_argument(std::string("settings.") + key + " is missing");
+  return j.at(key);
+}
+
+template <class Int>
+Int integer_setting(const nlohmann::json& j, const char* key) {
+  const auto value = json_integer<Int>(settings_field(j, key));
+  if (!value) throw std::invalid_argument(std::string("settings.") + key + " must be an integer of at most " +
+                                          std::to_string(std::numeric_limits<Int>::max()));
+  return *value;
+}
+
+double number_setting(const nlohmann::json& j, const char* key) {
+  const nlohmann::json& v = settings_field(j, key);
+  if (!v.is_number()) throw std::invalid_argument(std::string("settings.") + key + " must be a number");
+  return v.get<double>();
+}
+
+}  // namespace
+
+Settings settings_from_json(const nlohmann::json& j) {
+  Settings s;
+  s.seed = integer_setting<std::uint64_t>(j, "seed");
+  s.population = integer_setting<int>(j, "population");
+  s.evaluations = integer_setting<int>(j, "evaluations");
+  s.elites = integer_setting<int>(j, "elites");
+  s.mutation_sigma = number_setting(j, "mutation_sigma");
+  s.mutation_probability = number_setting(j, "mutation_probability");
+  s.weight_bound = number_setting(j, "weight_bound");
+  s.generations = integer_setting<int>(j, "generations");
+  return s;
+}
 
 std::string digest_text(std::uint64_t digest) {
   char text[19];

@@ -16,7 +16,8 @@ namespace sd::evostick {
 std::string module_command(const ModuleTraining& module, const Settings& settings);
 
 nlohmann::json settings_json(const Settings& settings);
-/// The settings back from settings_json's document; nlohmann::json::exception for a missing field.
+/// The settings back from settings_json's document; std::invalid_argument naming a field that is
+/// missing, not a number, or not an integer the setting can hold.
 Settings settings_from_json(const nlohmann::json& document);
 nlohmann::json history_json(const std::vector<GenerationRecord>& history);
 /// {"left": [25 weights], "right": [25 weights]}

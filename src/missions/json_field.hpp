@@ -3,12 +3,14 @@
 // mission format reports errors as "arena.floor.patches[1].radius: must be positive".
 #include <nlohmann/json.hpp>
 
+#include <climits>
 #include <cmath>
 #include <initializer_list>
 #include <set>
 #include <string>
 
 #include "core/geometry.hpp"
+#include "core/json_integer.hpp"
 #include "missions/mission.hpp"
 
 namespace sd {
@@ -72,7 +74,9 @@ class Field {
   }
   int integer() const {
     if (!value_->is_number_integer()) fail("expected an integer");
-    return value_->get<int>();
+    const auto v = json_integer<int>(*value_);  // 2^40 would wrap into range as an int
+    if (!v) fail("must be between " + std::to_string(INT_MIN) + " and " + std::to_string(INT_MAX));
+    return *v;
   }
   int integer_in(int lo, int hi) const {
     const int v = integer();

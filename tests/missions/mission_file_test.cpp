@@ -105,6 +105,9 @@ TEST(MissionFile, EveryMalformedFieldIsNamed) {
   expect_error(replace(kValid, "\"radius\": 0.3", "\"radius\": 0"), "start.circle.radius: must be positive");
   expect_error(replace(kValid, "\"radius\": 0.3", "\"radius\": 0.3, \"colour\": 1"), "start.circle.colour: unknown field");
   expect_error(replace(kValid, "\"sides\": 4", "\"sides\": 2"), "arena.walls[0].regular_polygon.sides");
+  // 2^32 + 4 read as an int wrapped to 4 and was accepted as a square.
+  expect_error(replace(kValid, "\"sides\": 4", "\"sides\": 4294967300"),
+               "arena.walls[0].regular_polygon.sides: must be between -2147483648 and 2147483647");
   expect_error(replace(kValid, "\"name\": \"tiny\"", "\"name\": \"a/b\""), "name:");
   expect_error(replace(kValid, "\"arena\": {", "\"arena\": {\"floor\": {\"patches\": [{\"region\": {\"circle\": {\"center\": [0], \"radius\": 1}}, \"color\": \"black\"}]}, "),
                "arena.floor.patches[0].region.circle.center: expected [x, y]");

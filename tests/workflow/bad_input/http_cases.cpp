@@ -72,6 +72,20 @@ std::vector<HttpCase> http_cases(const Inputs& in) {
        "nope"},
       {"POST", "/api/print", R"({"software": {"architecture": "bt", "nodes": [{"type": "sequence*", "children": [5]}]}})",
        C::SignedIn, 400, "children"},
+      // The drawing fuzzer's finding: a number where the list of transitions belongs answered 500.
+      {"POST", "/api/print",
+       R"({"software": {"architecture": "fsm", "states": [{"behaviour": {"id": 10, "parameters": {"rwm": 50}}, "transitions": 11}]}})",
+       C::SignedIn, 400, "software.states[0].transitions must be a list"},
+      // get<int>() on 1e300 is undefined behaviour; 2^32 + 10 would wrap to Exploration's id.
+      {"POST", "/api/print", R"({"software": {"architecture": "fsm", "states": [{"behaviour": {"id": 1e300}}]}})",
+       C::SignedIn, 400, "software.states[0].behaviour.id must be an integer"},
+      {"POST", "/api/print", R"({"software": {"architecture": "fsm", "states": [{"behaviour": {"id": 4294967306}}]}})",
+       C::SignedIn, 400, "software.states[0].behaviour.id must be an integer"},
+      {"POST", "/api/print", R"({"software": {"architecture": "bt", "nodes": [{"type": "sequence*", "children": 1}]}})",
+       C::SignedIn, 400, "software.nodes[0].children must be a list"},
+      {"POST", "/api/print",
+       R"({"software": {"architecture": "bt", "nodes": [{"type": "sequence*", "children": [18446744073709551617]}]}})",
+       C::SignedIn, 400, "children"},
       // Missions.
       {"GET", "/api/missions/svg", "", C::SignedIn, 400, "unknown mission ''"},
       // An unknown catalogue name is malformed (400, as the CLI's exit 2); a path is 404.
