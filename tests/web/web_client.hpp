@@ -13,6 +13,11 @@
 
 namespace sd::test {
 
+/// A two-state FSM (exploration and stop, switching on black floor) the web tests run and save.
+inline const std::string kFsm =
+    "--fsm-config --nstates 2 --s0 0 --rwm0 50 --n0 1 --n0x0 0 --c0x0 0 --p0x0 0.5 --s1 1 --n1 1 --n1x0 0 --c1x0 1 "
+    "--p1x0 0.5";
+
 /// The server on a free loopback port, serving on its own thread until destroyed.
 class RunningServer {
  public:

@@ -28,7 +28,7 @@ namespace {
 
 using nlohmann::json;
 
-const std::string kFsm = "--fsm-config --nstates 1 --s0 0 --rwm0 50";
+const std::string kOneStateFsm = "--fsm-config --nstates 1 --s0 0 --rwm0 50";
 const std::string kSecret = "SECRET-8d1f0c";  // in files no refusal may quote
 
 /// Resident memory of this process, in MiB.
@@ -83,7 +83,7 @@ class WebSecurity : public ::testing::Test {
   /// What every route that takes a mission answers for `path`: creating a project, Exec, drawing.
   std::vector<Answer> mission_answers(WebClient& client, const std::string& path) {
     return {client.post("/api/projects", {{"name", "probe"}, {"mission", path}, {"budget", "300"}}),
-            client.post("/api/runs", {{"text", kFsm}, {"mission", path}, {"seed", 1}}),
+            client.post("/api/runs", {{"text", kOneStateFsm}, {"mission", path}, {"seed", 1}}),
             client.get("/api/missions/svg?name=" + path)};
   }
 
@@ -175,7 +175,7 @@ TEST_F(WebSecurity, ALinkPlantedInOnesOwnProjectDoesNotLeadOut) {
   EXPECT_EQ(alice_->get("/api/missions/svg?name=" + (folder / "alias.json").string()).status, 200);
 
   // Saved control software is read under the same rule: a planted .txt link is not read.
-  ASSERT_EQ(alice_->post("/api/projects/mine/software", {{"name", "walker"}, {"text", kFsm}}).status, 200);
+  ASSERT_EQ(alice_->post("/api/projects/mine/software", {{"name", "walker"}, {"text", kOneStateFsm}}).status, 200);
   std::ofstream(root_ / "secret.txt") << kSecret;
   std::filesystem::create_symlink(root_ / "secret.txt", folder / "software" / "stolen.txt");
   std::filesystem::create_symlink("/dev/urandom", folder / "software" / "noise.txt");
@@ -192,12 +192,12 @@ TEST_F(WebSecurity, ALinkPlantedInOnesOwnProjectDoesNotLeadOut) {
     app::Home home(root_ / "home");
     storage::Projects(home.workspace(), app::sign_in_here(home, "alice", "alice-password").user).create("other", std::nullopt);
   }
-  EXPECT_EQ(alice_->post("/api/projects/other/software", {{"name", "w"}, {"text", kFsm}}).status, 404);
+  EXPECT_EQ(alice_->post("/api/projects/other/software", {{"name", "w"}, {"text", kOneStateFsm}}).status, 404);
   EXPECT_TRUE(std::filesystem::is_empty(root_ / "elsewhere"));
   // Nor does a link to a folder that does not exist yet get that folder made.
   std::filesystem::remove(projects_of("alice") / "other" / "software");
   std::filesystem::create_symlink(root_ / "not-yet", projects_of("alice") / "other" / "software");
-  EXPECT_EQ(alice_->post("/api/projects/other/software", {{"name", "w"}, {"text", kFsm}}).status, 404);
+  EXPECT_EQ(alice_->post("/api/projects/other/software", {{"name", "w"}, {"text", kOneStateFsm}}).status, 404);
   EXPECT_FALSE(std::filesystem::exists(root_ / "not-yet"));
 }
 
@@ -226,7 +226,7 @@ TEST_F(WebSecurity, DevicesFifosAndHugeFilesAreRefusedAtOnceWithMemoryFlat) {
   }
   // A malformed file of her own: the error says where, and quotes nothing of it.
   std::ofstream(folder / "typo.json") << "{\n  \"name\": \"" << kSecret << "\",\n  oops\n}";
-  const Answer typo = alice_->post("/api/runs", {{"text", kFsm}, {"mission", (folder / "typo.json").string()}, {"seed", 1}});
+  const Answer typo = alice_->post("/api/runs", {{"text", kOneStateFsm}, {"mission", (folder / "typo.json").string()}, {"seed", 1}});
   EXPECT_EQ(typo.status, 400);
   EXPECT_NE(typo.text.find("line 3, column 3"), std::string::npos) << typo.text;
   EXPECT_EQ(typo.text.find(kSecret), std::string::npos) << typo.text;
@@ -349,18 +349,18 @@ TEST_F(WebSecurity, OneUsersRunsDoNotTakeEveryoneElsesExec) {
   std::ofstream(folder / "crowd.json") << text;
   const std::string crowd = (folder / "crowd.json").string();
   for (int i = 0; i < 4; ++i) {
-    const Answer a = alice_->post("/api/runs", {{"text", kFsm}, {"mission", crowd}, {"seed", i + 1}});
+    const Answer a = alice_->post("/api/runs", {{"text", kOneStateFsm}, {"mission", crowd}, {"seed", i + 1}});
     ASSERT_EQ(a.status, 200) << a.text;
   }
-  const Answer fifth = alice_->post("/api/runs", {{"text", kFsm}, {"mission", crowd}, {"seed", 9}});
+  const Answer fifth = alice_->post("/api/runs", {{"text", kOneStateFsm}, {"mission", crowd}, {"seed", 9}});
   EXPECT_EQ(fifth.status, 409) << fifth.text;
   EXPECT_NE(fifth.text.find("you are already simulating"), std::string::npos) << fifth.text;
-  const Answer bobs = bob_->post("/api/runs", {{"text", kFsm}, {"mission", "aac"}, {"seed", 1}});
+  const Answer bobs = bob_->post("/api/runs", {{"text", kOneStateFsm}, {"mission", "aac"}, {"seed", 1}});
   EXPECT_EQ(bobs.status, 200) << "Bob's Exec must not wait for Alice's runs: " << bobs.text;
   // A run longer than Exec records is the CLI's.
   std::ofstream(folder / "endless.json") << std::regex_replace(text, std::regex("\"duration\": 99.9"), "\"duration\": 1000");
   const Answer too_long =
-      alice_->post("/api/runs", {{"text", kFsm}, {"mission", (folder / "endless.json").string()}, {"seed", 1}});
+      alice_->post("/api/runs", {{"text", kOneStateFsm}, {"mission", (folder / "endless.json").string()}, {"seed", 1}});
   EXPECT_EQ(too_long.status, 400) << too_long.text;
   EXPECT_NE(too_long.text.find("robot-ticks"), std::string::npos) << too_long.text;
 }

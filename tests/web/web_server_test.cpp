@@ -39,9 +39,6 @@ namespace {
 
 using nlohmann::json;
 
-const std::string kFsm =
-    "--fsm-config --nstates 2 --s0 0 --rwm0 50 --n0 1 --n0x0 0 --c0x0 0 --p0x0 0.5 --s1 1 --n1 1 --n1x0 0 --c1x0 1 "
-    "--p1x0 0.5";
 
 class WebServer : public ::testing::Test {
  protected:
