@@ -9,6 +9,7 @@
 #include "app/documents.hpp"
 #include "app/evaluation_job.hpp"
 #include "app/inputs.hpp"
+#include "app/start_poses.hpp"
 #include "app/user_files.hpp"
 #include "cli/command_registry.hpp"
 #include "cli/control_software_input.hpp"
@@ -79,7 +80,7 @@ void register_evaluate(CLI::App& app, Context& context) {
   auto* cmd = app.add_subcommand("evaluate", "Simulate control software on a mission and print its score per seed");
   struct Options {
     // The seed is text for app::parse_seed: CLI11 would read "-1" as 2^64-1.
-    std::string mission, seed = "1", seeds, trace, render, arlequin_modules;
+    std::string mission, seed = "1", seeds, trace, render, arlequin_modules, start_from;
     int render_every = 10;
     int threads = 0;
     bool json = false;
@@ -99,6 +100,9 @@ void register_evaluate(CLI::App& app, Context& context) {
   cmd->add_option("--arlequin-modules", o->arlequin_modules,
                   "Arlequin module set that runs modules 50-55: swarmdesign (the shipped networks, default), demiurge "
                   "(Demiurge's networks and machinery) or a folder of the six weight documents");
+  cmd->add_option("--start-from", o->start_from,
+                  "Start every run from the robots' poses at tick 0 of a trace FILE (ARGoS' set-4 traces or "
+                  "--trace output, uncompressed); the seed then draws only noise");
   cmd->add_flag("--json", o->json, "Print one JSON document");
   add_control_software_options(*cmd, o->software);
   cmd->footer(
@@ -106,7 +110,8 @@ void register_evaluate(CLI::App& app, Context& context) {
       "Example: swarmdesign evaluate --mission aac --seeds 1-20 --fsm-config --nstates 1 --s0 10 --rwm0 50\n"
       "A video from --render frames: ffmpeg -framerate 10 -pattern_type glob -i 'DIR/*.svg' run.webm");
   cmd->callback([o, &context] {
-    const Mission mission = app::with_requested_arlequin_modules(app::load_requested_mission(o->mission), o->arlequin_modules);
+    const Mission mission = app::with_start_from(
+        app::with_requested_arlequin_modules(app::load_requested_mission(o->mission), o->arlequin_modules), o->start_from);
     const ControlSoftware software = read_control_software(context, o->software);
     const std::vector<std::uint64_t> seeds =
         o->seeds.empty() ? std::vector<std::uint64_t>{app::parse_seed(o->seed)} : app::parse_seed_range(o->seeds);

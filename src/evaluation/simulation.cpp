@@ -25,6 +25,12 @@ void Simulation::reset(std::uint64_t seed) {
   rng_.reseed(seed);
   tick_ = 0;
   place_robots(mission_->arena, [this](Rng& rng) { return mission_->draw_start(rng); }, swarm_, rng_);
+  const std::vector<StartPose>& given = mission_->start_poses;
+  for (std::size_t r = 0; r < given.size() && r < swarm_.position.size(); ++r) {
+    swarm_.position[r] = given[r].position;
+    swarm_.yaw[r] = wrap_signed(given[r].yaw);
+    swarm_.heading[r] = Vec2::polar(1.0, swarm_.yaw[r]);
+  }
   for (std::size_t k = 0; k < mission_->arena.leds.size(); ++k) swarm_.arena_led_color[k] = mission_->arena.leds[k].initial_color;
   physics_.reset(mission_->robots);
   for (auto& rm : reference_) rm.reset();

@@ -56,6 +56,11 @@ struct ObjectiveSpec {
   ObjectiveParameters parameters;
 };
 
+struct StartPose {
+  Vec2 position;
+  double yaw = 0.0;  // rad
+};
+
 struct Mission {
   std::string name;
   std::string title;
@@ -84,6 +89,11 @@ struct Mission {
   /// ("swarmdesign", "demiurge" or a folder); null when the field is absent, which runs the
   /// shipped networks exactly as "swarmdesign" does. The digest covers a folder's weights.
   std::shared_ptr<const arlequin::ModuleSet> arlequin_modules;
+  /// When not empty, every run starts from these poses, one per robot, instead of drawing
+  /// them (evaluate --start-from: ARGoS' own tick-0 poses, so that a comparison with ARGoS is
+  /// not also a comparison of two start samples). The draw still happens, so the seed's noise
+  /// streams are those of an ordinary run. Never part of a mission file or a design.
+  std::vector<StartPose> start_poses;
 
   /// One start position, as placement draws it (before rejecting overlaps).
   Vec2 draw_start(Rng& rng) const;

@@ -1,6 +1,6 @@
 // Each file format the CLI reads, malformed: mission files, experiment protocols, Arlequin
 // module sets (folders of weight documents), EvoStick state documents, control-software
-// documents (--config-file) and design folders.
+// documents (--config-file), start traces (--start-from) and design folders.
 #include <fstream>
 
 #include "workflow/bad_input/catalogue.hpp"
@@ -70,6 +70,24 @@ const std::vector<std::pair<std::string, std::string>> kConfigFiles{
     {"--fsm-config\n--nstates 1 --s0 0 --rwm0 5x", "5x"},
 };
 
+// Malformed start traces (evaluate --start-from) and what the error names.
+std::string start_rows(int robots, const std::string& first = "") {
+  std::string text = "tick,robot,x,y,yaw\n";
+  for (int r = 0; r < robots; ++r)
+    text += r == 0 && !first.empty() ? first + "\n" : "0,epuck" + std::to_string(r) + ",0." + std::to_string(r % 10) + ",0.1,0\n";
+  return text;
+}
+const std::vector<std::pair<std::string, std::string>> kStartTraces{
+    {"", "empty"},
+    {"tick,robot,x,y\n0,epuck0,0,0\n", "no column 'yaw'"},
+    {start_rows(19), "19 robots at tick 0; the mission has 20"},
+    {start_rows(20, "0,epuck20,0,0,0"), "'epuck20' is no robot"},
+    {start_rows(20, "0,epuck1,0,0,0"), "appears twice"},
+    {start_rows(20, "0,epuck0,abc,0,0"), "finite numbers"},
+    {start_rows(20, "0,epuck0,1e300,0,0"), "beyond 10 m"},
+    {start_rows(20, "0,epuck0,0"), "line 2 has 3 fields"},
+};
+
 const char* kArlequinModules[] = {"exploration", "stop", "phototaxis", "antiphototaxis", "attraction", "repulsion"};
 
 std::filesystem::path numbered(const std::filesystem::path& folder, const std::string& stem, std::size_t i) {
@@ -83,6 +101,7 @@ void write_bad_files(const Inputs& in) {
   for (std::size_t i = 0; i < kProtocols.size(); ++i) write(numbered(in.files, "protocol", i), kProtocols[i].first);
   for (std::size_t i = 0; i < kStates.size(); ++i) write(numbered(in.files, "state", i), kStates[i].first);
   for (std::size_t i = 0; i < kConfigFiles.size(); ++i) write(numbered(in.files, "config", i), kConfigFiles[i].first);
+  for (std::size_t i = 0; i < kStartTraces.size(); ++i) write(numbered(in.files, "start", i), kStartTraces[i].first);
   // Arlequin module sets: one weight document missing, one malformed, one of the wrong size.
   const std::filesystem::path shipped = std::filesystem::path(SWARMDESIGN_SOURCE_DIR) / "data" / "arlequin";
   for (const char* set : {"set-missing", "set-garbage", "set-short"}) {
@@ -138,6 +157,11 @@ std::vector<CliCase> file_cases(const Inputs& in) {
     cases.push_back({{"test-design", "--config-file", file}, "", 2, file});
   }
   cases.push_back({evaluate({"show-config", "--config-file", numbered(in.files, "config", 1).string()}), "", 2, "not both"});
+  for (std::size_t i = 0; i < kStartTraces.size(); ++i)
+    cases.push_back({evaluate({"evaluate", "--mission", "aac", "--start-from", numbered(in.files, "start", i).string()}),
+                     "", 2, kStartTraces[i].second});
+  for (const std::string& file : {std::string("/dev/zero"), (in.files / "absent.csv").string()})
+    cases.push_back({evaluate({"evaluate", "--mission", "aac", "--start-from", file}), "", 2, file});
   for (const char* set : {"set-missing", "set-garbage", "set-short"})
     cases.push_back({evaluate({"evaluate", "--mission", "aac", "--arlequin-modules", (in.files / set).string()}), "", 2,
                      "stop"});
