@@ -6,6 +6,12 @@
 // per group: Spearman's rho, the median ratio, the controllers above and below ARGoS, and
 // Stouffer's combined z (the controllers' t summed over the square root of their number), which
 // tests a whole mission for a lean in one direction. Run with --help for the options.
+//
+// With --start-from PATTERN (a tick-0 trace per ARGoS seed, "{seed}" in the pattern) the
+// comparison is start-matched instead: for each ARGoS seed with a trace, the controller runs
+// here from ARGoS' own start placement on noise seeds 1..N, and its mean is paired with ARGoS'
+// score on that seed (paired t, and Stouffer's z of the paired tests' normal scores). ARGoS'
+// 20 placements are a sample too; matching them takes that sample out of the comparison.
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
@@ -13,16 +19,20 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <stdexcept>
 #include <fstream>
 #include <string>
 #include <vector>
 
+#include "app/start_poses.hpp"
 #include "control/config_string.hpp"
+#include "core/bounded_file.hpp"
 #include "evaluation/argos_reference.hpp"
 #include "evaluation/evaluator.hpp"
 #include "statistics/correlation.hpp"
 #include "statistics/descriptive.hpp"
+#include "statistics/paired_t.hpp"
 #include "statistics/stouffer.hpp"
 #include "statistics/welch.hpp"
 
@@ -69,6 +79,63 @@ nlohmann::json compare_group(const ArgosReferenceGroup& group, const std::string
           {"rows", rows}};
 }
 
+/// ARGoS' seeds (1-based) that have a start trace, each with the mission started from it.
+std::vector<std::pair<int, Mission>> started_missions(const Mission& mission, const std::string& pattern, std::size_t seeds) {
+  std::vector<std::pair<int, Mission>> out;
+  for (int seed = 1; seed <= static_cast<int>(seeds); ++seed) {
+    std::string path = pattern;
+    const auto at = path.find("{seed}");
+    if (at == std::string::npos) throw std::runtime_error("--start-from needs {seed} in its pattern");
+    path.replace(at, 6, std::to_string(seed));
+    if (!std::filesystem::exists(path)) continue;
+    Mission started = mission;
+    started.start_poses = app::start_poses_from_trace(read_bounded_file(path, "start trace", std::size_t{64} << 20).text, mission.robots);
+    out.emplace_back(seed, std::move(started));
+  }
+  if (out.empty()) throw std::runtime_error("no start trace matches " + pattern);
+  return out;
+}
+
+nlohmann::json compare_group_start_matched(const ArgosReferenceGroup& group, const std::string& data, int seeds,
+                                           const std::string& pattern, ThreadedEvaluator& evaluator) {
+  const std::vector<ArgosReferenceController> refs = read_argos_reference(data, group);
+  const std::vector<std::pair<int, Mission>> starts =
+      started_missions(argos_reference_mission(group), pattern, refs.empty() ? 0 : refs.front().scores.size());
+  ArgosAgreement agreement;
+  std::vector<double> z_scores;
+  nlohmann::json rows = nlohmann::json::array();
+  for (const ArgosReferenceController& ref : refs) {
+    const ControlSoftware software = parse_control_software(ref.config, {ref.legacy_flavour});
+    std::vector<double> ours, theirs;
+    for (const auto& [seed, mission] : starts) {
+      std::vector<EvaluationTask> tasks;
+      for (int noise = 1; noise <= seeds; ++noise) tasks.push_back({&software, static_cast<std::uint64_t>(noise)});
+      std::vector<double> scores(tasks.size());
+      evaluator.evaluate(mission, tasks, scores);
+      ours.push_back(mean(scores));
+      theirs.push_back(ref.scores.at(static_cast<std::size_t>(seed - 1)));
+    }
+    const statistics::PairedTest test = statistics::paired_t_test(ours, theirs);
+    const double z = std::isfinite(test.z) ? test.z : 0.0;
+    z_scores.push_back(z);
+    agreement.add(mean(ours), mean(theirs));
+    std::printf("%-18s %-4s %zu starts  argos %10.2f  ours %10.2f  ratio %6.2f  paired t %+6.2f (df %.0f, p %.3f)  z %+5.2f\n",
+                group.name, ref.name.c_str(), starts.size(), mean(theirs), mean(ours),
+                mean(theirs) != 0 ? mean(ours) / mean(theirs) : NAN, test.statistic, test.df, test.p_value, z);
+    std::fflush(stdout);
+    rows.push_back({{"controller", ref.name}, {"argos_mean", mean(theirs)}, {"ours_mean", mean(ours)},
+                    {"paired_t", test.statistic}, {"df", test.df}, {"p_value", test.p_value}, {"z", z}});
+  }
+  const auto [z, p] = statistics::stouffer_z(z_scores);
+  const double median_ratio = agreement.ratios.empty() ? NAN : statistics::median(agreement.ratios);
+  std::printf("== %s start-matched: %zu controllers, %zu ARGoS starts x noise seeds 1-%d: median ratio %.3f  above %d "
+              "below %d  Stouffer z %+.2f (p %.4f)\n",
+              group.name, refs.size(), starts.size(), seeds, median_ratio, agreement.above, agreement.below, z, p);
+  return {{"group", group.name}, {"start_matched", true}, {"starts", starts.size()}, {"controllers", refs.size()},
+          {"median_ratio", median_ratio}, {"above", agreement.above}, {"below", agreement.below}, {"stouffer_z", z},
+          {"stouffer_p", p}, {"rows", rows}};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -85,6 +152,10 @@ int main(int argc, char** argv) {
   app.add_option("--threads", threads, "Simulations in parallel (default: all cores)")->check(CLI::NonNegativeNumber);
   app.add_option("--data", data, "Folder of argos-reference*.csv (default: the repository's tests/data)");
   app.add_option("--json", json_path, "Also write every figure to FILE as one JSON document");
+  std::string start_pattern;
+  app.add_option("--start-from", start_pattern,
+                 "Start-matched: ARGoS' tick-0 trace of each seed, {seed} in the path (uncompressed CSV, e.g. "
+                 "'/tmp/aac-start-{seed}.csv'); seeds without a file are left out. --seeds is then the noise seeds per start");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -104,7 +175,9 @@ int main(int argc, char** argv) {
     nlohmann::json report{{"seeds", seeds}, {"groups", nlohmann::json::array()}};
     for (const ArgosReferenceGroup& group : argos_reference_groups())
       if (only.empty() || std::find(only.begin(), only.end(), group.name) != only.end())
-        report["groups"].push_back(compare_group(group, data, seeds, evaluator));
+        report["groups"].push_back(start_pattern.empty()
+                                       ? compare_group(group, data, seeds, evaluator)
+                                       : compare_group_start_matched(group, data, seeds, start_pattern, evaluator));
     if (!json_path.empty() && !(out << report.dump(1) << '\n')) throw std::runtime_error("cannot write " + json_path);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "calibration_wide: error: %s\n", e.what());

@@ -17,6 +17,7 @@
 #include "statistics/ranks.hpp"
 #include "statistics/signed_rank.hpp"
 #include "statistics/stouffer.hpp"
+#include "statistics/paired_t.hpp"
 #include "statistics/welch.hpp"
 
 using namespace sd::statistics;
@@ -129,4 +130,29 @@ TEST(statistics_EdgeCases, StoufferCombinesScoresAndRefusesNone) {
   EXPECT_EQ(balanced.z, 0.0);
   EXPECT_EQ(balanced.p_value, 1.0);
   EXPECT_THROW(stouffer_z(kEmpty), std::invalid_argument);
+}
+
+// R: t.test(extra ~ group, data = sleep, paired = TRUE) -> t = -4.0621, df = 9, p-value = 0.002833;
+// qnorm(0.002833 / 2) = -2.985.
+TEST(statistics_PairedT, MatchesRsSleepData) {
+  const std::vector<double> one{0.7, -1.6, -0.2, -1.2, -0.1, 3.4, 3.7, 0.8, 0.0, 2.0};
+  const std::vector<double> two{1.9, 0.8, 1.1, 0.1, -0.1, 4.4, 5.5, 1.6, 4.6, 3.4};
+  const sd::statistics::PairedTest t = sd::statistics::paired_t_test(one, two);
+  EXPECT_NEAR(t.statistic, -4.062128, 1e-6);
+  EXPECT_EQ(t.df, 9.0);
+  EXPECT_NEAR(t.p_value, 0.002832890, 1e-8);
+  EXPECT_NEAR(t.z, -2.985312, 1e-5);
+  const sd::statistics::PairedTest back = sd::statistics::paired_t_test(two, one);
+  EXPECT_NEAR(back.z, 2.985312, 1e-5);
+}
+
+TEST(statistics_PairedT, EdgeCasesAreSaid) {
+  const std::vector<double> a{1, 2, 3}, b{1, 2, 3}, shifted{2, 3, 4};
+  EXPECT_EQ(sd::statistics::paired_t_test(a, b).statistic, 0.0);
+  EXPECT_EQ(sd::statistics::paired_t_test(a, b).p_value, 1.0);
+  EXPECT_TRUE(std::isinf(sd::statistics::paired_t_test(shifted, a).z));
+  EXPECT_GT(sd::statistics::paired_t_test(shifted, a).z, 0.0);
+  EXPECT_THROW(sd::statistics::paired_t_test(std::vector<double>{1}, std::vector<double>{2}), std::invalid_argument);
+  EXPECT_THROW(sd::statistics::paired_t_test(a, std::vector<double>{1, 2}), std::invalid_argument);
+  EXPECT_THROW(sd::statistics::paired_t_test(a, std::vector<double>{1, NAN, 3}), std::invalid_argument);
 }
