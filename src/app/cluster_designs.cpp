@@ -34,6 +34,10 @@ std::string job_body(const std::string& folder, const storage::Design& d, const 
   return "set -u\n"
          "cd " + q + " || exit 1\n"
          "if [ -f design/design.db ]; then\n"
+         // Submitted again right after its predecessor was cut (TIMEOUT, scancel), the job may
+         // start while that one still saves its last checkpoint within Slurm's KillWait: wait
+         // for it to let go of the design rather than fail on its lock.
+         "  command -v flock >/dev/null 2>&1 && [ -f design/design.lock ] && flock -w 300 design/design.lock true\n"
          "  set -- design --resume \"$PWD/design\"\n"
          "else\n"
          "  set -- design --mission \"$PWD/mission.json\" --budget " + std::to_string(d.budget) +

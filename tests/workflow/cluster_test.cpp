@@ -208,9 +208,19 @@ TEST_F(cluster_projects, AJobCutByItsTimeLimitSaysSoAndResumesWhenSubmittedAgain
       << cut.dump(2);
   const int used = cut["progress"]["experiments_used"].get<int>();
   EXPECT_GT(used, 0);
+  // The job submitted again may start while its predecessor still saves its last checkpoint
+  // (Slurm's KillWait; a loaded machine made that one hold the design's lock for a while, and
+  // the new job failed on it). It must wait for the lock, not fail: hold it here for 6 s.
+  const std::string lock = cut["cluster_job"]["folder"].get<std::string>() + "/design/design.lock";
+  ASSERT_TRUE(std::filesystem::exists(lock)) << lock;
+  std::thread holder([&] { run_program("/usr/bin/flock", {lock, "sleep", "6"}, "", {}); });
+  std::this_thread::sleep_for(1s);  // flock has taken it
   sd_ok({"run-design", "--time", "10"});
-  follow([&](const json& s) { return s["progress"]["experiments_used"].get<int>() > used; }, 120s);
-  sd_ok({"stop-design"});
+  holder.join();
+  const json resumed = follow([&](const json& s) { return s["progress"]["experiments_used"].get<int>() > used; }, 120s);
+  EXPECT_TRUE(in_state(resumed, "running")) << resumed.dump(2);
+  const Outcome stopped = sd({"stop-design"});
+  EXPECT_EQ(stopped.exit_code, 0) << stopped.err << "\nstatus before: " << resumed.dump(2) << "\nafter: " << status().dump(2);
 }
 
 TEST_F(cluster_projects, AnExperimentGoesAsOneJobArrayAndEndsAsTheLocalOneDoes) {
