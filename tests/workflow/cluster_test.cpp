@@ -198,8 +198,10 @@ TEST_F(cluster_projects, FailuresAreOneLineTheProjectKeepsItsStateAndTheDesignGo
 }
 
 TEST_F(cluster_projects, AJobCutByItsTimeLimitSaysSoAndResumesWhenSubmittedAgain) {
-  // A design far longer than Slurm's smallest limit, one minute.
-  cluster_project("limited", this_host(), 200000);
+  // A design far longer than Slurm's smallest limit, one minute, and than the resumed job's
+  // first seconds: 200 000 runs of the short AAC took about a minute on 2 cores, so the resumed
+  // job sometimes finished before stop-design could stop it.
+  cluster_project("limited", this_host(), 20000000);
   sd_ok({"run-design", "--fsm", "--chocolate", "--time", "1"});
   const json cut = follow([](const json& s) { return !in_state(s, "running"); }, 240s);
   EXPECT_EQ(cut["design"]["state"], "interrupted");
