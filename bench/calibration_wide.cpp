@@ -27,7 +27,6 @@
 
 #include "app/start_poses.hpp"
 #include "control/config_string.hpp"
-#include "core/bounded_file.hpp"
 #include "evaluation/argos_reference.hpp"
 #include "evaluation/evaluator.hpp"
 #include "statistics/correlation.hpp"
@@ -81,16 +80,12 @@ nlohmann::json compare_group(const ArgosReferenceGroup& group, const std::string
 
 /// ARGoS' seeds (1-based) that have a start trace, each with the mission started from it.
 std::vector<std::pair<int, Mission>> started_missions(const Mission& mission, const std::string& pattern, std::size_t seeds) {
+  const auto at = pattern.find("{seed}");
+  if (at == std::string::npos) throw std::runtime_error("--start-from needs {seed} in its pattern");
   std::vector<std::pair<int, Mission>> out;
   for (int seed = 1; seed <= static_cast<int>(seeds); ++seed) {
-    std::string path = pattern;
-    const auto at = path.find("{seed}");
-    if (at == std::string::npos) throw std::runtime_error("--start-from needs {seed} in its pattern");
-    path.replace(at, 6, std::to_string(seed));
-    if (!std::filesystem::exists(path)) continue;
-    Mission started = mission;
-    started.start_poses = app::start_poses_from_trace(read_bounded_file(path, "start trace", std::size_t{64} << 20).text, mission.robots);
-    out.emplace_back(seed, std::move(started));
+    const std::string path = std::string(pattern).replace(at, 6, std::to_string(seed));
+    if (std::filesystem::exists(path)) out.emplace_back(seed, app::with_start_from(mission, path));
   }
   if (out.empty()) throw std::runtime_error("no start trace matches " + pattern);
   return out;
@@ -117,13 +112,14 @@ nlohmann::json compare_group_start_matched(const ArgosReferenceGroup& group, con
     }
     const statistics::PairedTest test = statistics::paired_t_test(ours, theirs);
     const double z = std::isfinite(test.z) ? test.z : 0.0;
+    const double ours_mean = mean(ours), argos_mean = mean(theirs);
     z_scores.push_back(z);
-    agreement.add(mean(ours), mean(theirs));
+    agreement.add(ours_mean, argos_mean);
     std::printf("%-18s %-4s %zu starts  argos %10.2f  ours %10.2f  ratio %6.2f  paired t %+6.2f (df %.0f, p %.3f)  z %+5.2f\n",
-                group.name, ref.name.c_str(), starts.size(), mean(theirs), mean(ours),
-                mean(theirs) != 0 ? mean(ours) / mean(theirs) : NAN, test.statistic, test.df, test.p_value, z);
+                group.name, ref.name.c_str(), starts.size(), argos_mean, ours_mean,
+                argos_mean != 0 ? ours_mean / argos_mean : NAN, test.statistic, test.df, test.p_value, z);
     std::fflush(stdout);
-    rows.push_back({{"controller", ref.name}, {"argos_mean", mean(theirs)}, {"ours_mean", mean(ours)},
+    rows.push_back({{"controller", ref.name}, {"argos_mean", argos_mean}, {"ours_mean", ours_mean},
                     {"paired_t", test.statistic}, {"df", test.df}, {"p_value", test.p_value}, {"z", z}});
   }
   const auto [z, p] = statistics::stouffer_z(z_scores);
