@@ -7,11 +7,11 @@
 // Stouffer's combined z (the controllers' t summed over the square root of their number), which
 // tests a whole mission for a lean in one direction. Run with --help for the options.
 //
-// With --start-from PATTERN (a tick-0 trace per ARGoS seed, "{seed}" in the pattern) the
-// comparison is start-matched instead: for each ARGoS seed with a trace, the controller runs
-// here from ARGoS' own start placement on noise seeds 1..N, and its mean is paired with ARGoS'
-// score on that seed (paired t, and Stouffer's z of the paired tests' normal scores). ARGoS'
-// 20 placements are a sample too; matching them takes that sample out of the comparison.
+// With --start-matched the comparison is start-matched instead, on the groups whose ARGoS start
+// placements are known (tests/data/argos-starts/): for each ARGoS seed with a known start, the
+// controller runs here from that placement on noise seeds 1..N, and its mean is paired with
+// ARGoS' score on that seed (paired t, and Stouffer's z of the paired tests' normal scores).
+// ARGoS' 20 placements are a sample too; matching them takes that sample out of the comparison.
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
@@ -19,13 +19,11 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
-#include <filesystem>
 #include <stdexcept>
 #include <fstream>
 #include <string>
 #include <vector>
 
-#include "app/start_poses.hpp"
 #include "control/config_string.hpp"
 #include "evaluation/argos_reference.hpp"
 #include "evaluation/evaluator.hpp"
@@ -78,24 +76,10 @@ nlohmann::json compare_group(const ArgosReferenceGroup& group, const std::string
           {"rows", rows}};
 }
 
-/// ARGoS' seeds (1-based) that have a start trace, each with the mission started from it.
-std::vector<std::pair<int, Mission>> started_missions(const Mission& mission, const std::string& pattern, std::size_t seeds) {
-  const auto at = pattern.find("{seed}");
-  if (at == std::string::npos) throw std::runtime_error("--start-from needs {seed} in its pattern");
-  std::vector<std::pair<int, Mission>> out;
-  for (int seed = 1; seed <= static_cast<int>(seeds); ++seed) {
-    const std::string path = std::string(pattern).replace(at, 6, std::to_string(seed));
-    if (std::filesystem::exists(path)) out.emplace_back(seed, app::with_start_from(mission, path));
-  }
-  if (out.empty()) throw std::runtime_error("no start trace matches " + pattern);
-  return out;
-}
-
 nlohmann::json compare_group_start_matched(const ArgosReferenceGroup& group, const std::string& data, int seeds,
-                                           const std::string& pattern, ThreadedEvaluator& evaluator) {
+                                           ThreadedEvaluator& evaluator) {
   const std::vector<ArgosReferenceController> refs = read_argos_reference(data, group);
-  const std::vector<std::pair<int, Mission>> starts =
-      started_missions(argos_reference_mission(group), pattern, refs.empty() ? 0 : refs.front().scores.size());
+  const std::vector<ArgosStart> starts = argos_starts(data, group, refs.empty() ? 0 : static_cast<int>(refs.front().scores.size()));
   ArgosAgreement agreement;
   std::vector<double> z_scores;
   nlohmann::json rows = nlohmann::json::array();
@@ -148,10 +132,10 @@ int main(int argc, char** argv) {
   app.add_option("--threads", threads, "Simulations in parallel (default: all cores)")->check(CLI::NonNegativeNumber);
   app.add_option("--data", data, "Folder of argos-reference*.csv (default: the repository's tests/data)");
   app.add_option("--json", json_path, "Also write every figure to FILE as one JSON document");
-  std::string start_pattern;
-  app.add_option("--start-from", start_pattern,
-                 "Start-matched: ARGoS' tick-0 trace of each seed, {seed} in the path (uncompressed CSV, e.g. "
-                 "'/tmp/aac-start-{seed}.csv'); seeds without a file are left out. --seeds is then the noise seeds per start");
+  bool start_matched = false;
+  app.add_flag("--start-matched", start_matched,
+               "Start-matched: run from ARGoS' own start placement of each seed where it is known (the data folder's\n"
+               "argos-starts/; groups without any are left out), paired seed by seed. --seeds is then the noise seeds per start");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -169,11 +153,14 @@ int main(int argc, char** argv) {
     }
     ThreadedEvaluator evaluator(threads);
     nlohmann::json report{{"seeds", seeds}, {"groups", nlohmann::json::array()}};
-    for (const ArgosReferenceGroup& group : argos_reference_groups())
-      if (only.empty() || std::find(only.begin(), only.end(), group.name) != only.end())
-        report["groups"].push_back(start_pattern.empty()
-                                       ? compare_group(group, data, seeds, evaluator)
-                                       : compare_group_start_matched(group, data, seeds, start_pattern, evaluator));
+    for (const ArgosReferenceGroup& group : argos_reference_groups()) {
+      if (!only.empty() && std::find(only.begin(), only.end(), group.name) == only.end()) continue;
+      if (!start_matched) {
+        report["groups"].push_back(compare_group(group, data, seeds, evaluator));
+      } else if (*group.argos_starts) {
+        report["groups"].push_back(compare_group_start_matched(group, data, seeds, evaluator));
+      }
+    }
     if (!json_path.empty() && !(out << report.dump(1) << '\n')) throw std::runtime_error("cannot write " + json_path);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "calibration_wide: error: %s\n", e.what());

@@ -5,6 +5,7 @@
 #include "app/errors.hpp"
 #include "core/bounded_file.hpp"
 #include "missions/catalogue.hpp"
+#include "missions/start_trace.hpp"
 #include "storage/workspace.hpp"
 
 namespace sd::app {
@@ -101,6 +102,15 @@ Mission with_requested_arlequin_modules(const Mission& mission, const std::strin
   if (name_or_folder.empty()) return mission;
   try {
     return with_arlequin_modules(mission, name_or_folder, scope.path_rule());
+  } catch (const MissionError& e) {
+    throw InvalidRequest(e.what());
+  }
+}
+
+Mission with_start_from(const Mission& mission, const std::string& path) {
+  if (path.empty()) return mission;
+  try {
+    return started_from_trace(mission, path);
   } catch (const MissionError& e) {
     throw InvalidRequest(e.what());
   }

@@ -53,5 +53,9 @@ Mission load_requested_mission(const std::string& name_or_path, const FileScope&
 /// is empty. InvalidRequest in one line for a bad set.
 Mission with_requested_arlequin_modules(const Mission& mission, const std::string& name_or_folder,
                                         const FileScope& scope = FileScope::local());
+/// The mission started from the tick-0 poses of the trace file the user named (evaluate
+/// --start-from; the command line's only: a whole trace is larger than the web's 1 MiB inputs);
+/// `mission` itself if the path is empty. InvalidRequest in one line for a bad trace.
+Mission with_start_from(const Mission& mission, const std::string& path);
 
 }  // namespace sd::app

@@ -9,7 +9,6 @@
 #include "app/documents.hpp"
 #include "app/evaluation_job.hpp"
 #include "app/inputs.hpp"
-#include "app/start_poses.hpp"
 #include "app/user_files.hpp"
 #include "cli/command_registry.hpp"
 #include "cli/control_software_input.hpp"

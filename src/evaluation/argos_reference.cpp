@@ -2,51 +2,52 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 #include <stdexcept>
 
+#include "core/csv_fields.hpp"
 #include "missions/catalogue.hpp"
+#include "missions/start_trace.hpp"
 #include "simulator/epuck.hpp"
 
 namespace sd {
 
+namespace {
+
+// ARGoS' AAC placements of seeds 1-5 (the set-4 Maple traces; tests/data/argos-starts/README.md).
+// The loop functions of SCA, of Chocolate's and Maple's AAC and of Demiurge's Arlequin AAC place
+// the robots alike seed by seed: the shelter is added after placement, and the traces of both
+// missions start identically.
+constexpr const char* kAacStarts = "argos-starts/aac_seed{seed}.csv";
+
+}  // namespace
+
 const std::vector<ArgosReferenceGroup>& argos_reference_groups() {
   static const std::vector<ArgosReferenceGroup> groups{
-      {"aac", "argos-reference.csv", "aac", "", "aac", 0, true},
+      {"aac", "argos-reference.csv", "aac", "", "aac", 0, true, "", kAacStarts},
       {"foraging", "argos-reference.csv", "foraging", "", "foraging", 0, true},
-      {"sca", "argos-reference-2.csv", "sca", "fsm", "sca", 0, false},
+      {"sca", "argos-reference-2.csv", "sca", "fsm", "sca", 0, false, "", kAacStarts},
       {"lcn", "argos-reference-2.csv", "lcn", "fsm", "lcn", 0, false},
       // ARGoS ran the two-spot aggregation for 180 s; the catalogue's lasts 250 s.
       {"aggregation180", "argos-reference-2.csv", "aggregation180", "fsm", "aggregation", 180, false},
-      {"aac_bt", "argos-reference-2.csv", "aac", "bt", "aac", 0, false},
+      {"aac_bt", "argos-reference-2.csv", "aac", "bt", "aac", 0, false, "", kAacStarts},
       {"foraging_bt", "argos-reference-2.csv", "foraging", "bt", "foraging", 0, false},
-      {"tutti_aggregation", "argos-reference-3.csv", "tutti-aggregation", "fsm", "tutti-aggregation", 0, false},
+      {"tutti_aggregation", "argos-reference-3.csv", "tutti-aggregation", "fsm", "tutti-aggregation", 0, false, "",
+       "argos-starts/tutti_aggregation_seed{seed}.csv"},
       {"tutti_stop", "argos-reference-3.csv", "tutti-stop", "fsm", "tutti-stop", 0, false},
       {"tutti_foraging", "argos-reference-3.csv", "tutti-foraging", "fsm", "tutti-foraging", 0, false},
       {"grid_exploration", "argos-reference-5.csv", "grid-exploration", "fsm", "grid-exploration", 0, false},
       {"coconut_aggregation", "argos-reference-5.csv", "coconut-aggregation", "fsm", "coconut-aggregation", 0, false},
       {"coconut_foraging", "argos-reference-5.csv", "coconut-foraging", "fsm", "coconut-foraging", 0, false},
       // Demiurge's Arlequin: its own six networks and machinery, not SwarmDesign's shipped set.
-      {"arlequin_aac", "argos-reference-6.csv", "aac", "fsm", "aac", 0, false, "demiurge"},
+      {"arlequin_aac", "argos-reference-6.csv", "aac", "fsm", "aac", 0, false, "demiurge", kAacStarts},
       {"aggregation_xor", "argos-reference-6.csv", "aggregation-xor", "fsm", "aggregation-xor", 0, false, "demiurge"},
   };
   return groups;
 }
-
-namespace {
-
-std::vector<std::string> split_csv(std::string line) {
-  if (!line.empty() && line.back() == '\r') line.pop_back();  // the first file has CRLF line ends
-  std::vector<std::string> cells;
-  std::stringstream row(line);
-  for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
-  return cells;
-}
-
-}  // namespace
 
 std::vector<ArgosReferenceController> read_argos_reference(const std::string& folder, const ArgosReferenceGroup& group) {
   const std::string path = folder + "/" + group.file;
@@ -54,7 +55,7 @@ std::vector<ArgosReferenceController> read_argos_reference(const std::string& fo
   if (!in) throw std::runtime_error("cannot read " + path);
   std::string line;
   std::getline(in, line);
-  const std::vector<std::string> header = split_csv(line);
+  const std::vector<std::string_view> header = csv_fields(line);
   const auto column = [&](const std::string& name) {
     const auto it = std::find(header.begin(), header.end(), name);
     return it == header.end() ? -1 : static_cast<int>(it - header.begin());
@@ -64,11 +65,12 @@ std::vector<ArgosReferenceController> read_argos_reference(const std::string& fo
             flavour = column("legacy_flavour");
   if (mission < 0 || controller < 0 || config < 0 || seed < 0 || score < 0)
     throw std::runtime_error(path + ": the header lacks mission, controller, config, seed or argos_score");
+  const std::size_t columns = header.size();  // `header` views `line`, which the loop reuses
   std::map<std::string, ArgosReferenceController> found;
   for (int number = 2; std::getline(in, line); ++number) {
-    const std::vector<std::string> cells = split_csv(line);
-    const auto cell = [&](int k) { return cells[static_cast<std::size_t>(k)]; };
-    if (cells.size() != header.size() || cell(mission) != group.reference_mission) continue;
+    const std::vector<std::string_view> cells = csv_fields(line);
+    const auto cell = [&](int k) { return std::string(cells[static_cast<std::size_t>(k)]); };
+    if (cells.size() != columns || cell(mission) != group.reference_mission) continue;
     if (architecture >= 0 && cell(architecture) != group.architecture) continue;
     ArgosReferenceController& ref = found[cell(controller)];
     ref.name = cell(controller);
@@ -110,6 +112,19 @@ Mission argos_reference_mission(const ArgosReferenceGroup& group) {
     mission.ticks = static_cast<int>(std::lround(group.duration_s / epuck::kTickSeconds));  // as a mission file's
   }
   return mission;
+}
+
+std::vector<ArgosStart> argos_starts(const std::string& folder, const ArgosReferenceGroup& group, int seeds) {
+  std::vector<ArgosStart> out;
+  const std::string pattern = group.argos_starts;
+  const std::size_t at = pattern.find("{seed}");
+  if (at == std::string::npos) return out;
+  const Mission mission = argos_reference_mission(group);
+  for (int seed = 1; seed <= seeds; ++seed) {
+    const std::filesystem::path path = folder + "/" + std::string(pattern).replace(at, 6, std::to_string(seed));
+    if (std::filesystem::exists(path)) out.push_back({seed, started_from_trace(mission, path)});
+  }
+  return out;
 }
 
 }  // namespace sd

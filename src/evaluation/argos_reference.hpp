@@ -21,6 +21,9 @@ struct ArgosReferenceGroup {
   double duration_s;    // 0: the catalogue mission's; else ARGoS ran it this long
   bool exact_ranking;   // the group's controllers must rank exactly as in ARGoS
   const char* arlequin_modules = "";  // the module set ARGoS' 50-55 were ("": the mission's)
+  /// ARGoS' tick-0 poses of seed N, "{seed}" standing for N, in the data folder ("": none known);
+  /// a seed without its file is not known.
+  const char* argos_starts = "";
 };
 
 /// Every group of the calibration set, in the order the README's tables list them.
@@ -50,5 +53,16 @@ struct ArgosAgreement {
 
 /// The catalogue mission of the group, run for as long as ARGoS ran it.
 Mission argos_reference_mission(const ArgosReferenceGroup& group);
+
+/// One of ARGoS' seeds whose start placement is known, and the group's mission started from it
+/// (a run's seed then draws only noise).
+struct ArgosStart {
+  int seed;
+  Mission mission;
+};
+
+/// The known starts of ARGoS' seeds 1..`seeds`, in seed order; empty when the group has none.
+/// Throws MissionError naming the file when one is malformed.
+std::vector<ArgosStart> argos_starts(const std::string& folder, const ArgosReferenceGroup& group, int seeds);
 
 }  // namespace sd

@@ -1,19 +1,18 @@
-// evaluate --start-from: a run from given tick-0 poses. Read from a trace, the poses land on
+// A run from given tick-0 poses (evaluate --start-from, the calibration's ARGoS starts). Read from a trace, the poses land on
 // the right robots; a run from its own start is the run itself, bit for bit; and every
 // malformed trace is one line naming what is wrong (the bad-input catalogue has the CLI's).
-#include "app/start_poses.hpp"
+#include "missions/start_trace.hpp"
 
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
-#include "app/errors.hpp"
 #include "control/config_string.hpp"
 #include "evaluation/simulation.hpp"
 #include "missions/catalogue.hpp"
 
-namespace sd::app {
+namespace sd {
 namespace {
 
 /// Captures the poses after placement.
@@ -32,7 +31,7 @@ class StartRecorder : public TickObserver {
 std::string refusal(const std::string& text, int robots) {
   try {
     (void)start_poses_from_trace(text, robots);
-  } catch (const InvalidRequest& e) {
+  } catch (const MissionError& e) {
     return e.what();
   }
   return "(accepted)";
@@ -53,6 +52,13 @@ TEST(StartPoses, EachRobotGetsItsPoseWhateverTheRowOrderAndLaterTicksAreNotRead)
     EXPECT_DOUBLE_EQ(poses[static_cast<std::size_t>(r)].yaw, r * 1e-1);
   }
   EXPECT_EQ(refusal(text, 4), "the start trace's line 2: 'epuck10' is no robot of the mission's 4 (epuck0 to epuck3)");
+}
+
+TEST(StartPoses, WindowsLineEndsReadAsUnixOnes) {
+  const std::vector<StartPose> poses = start_poses_from_trace("tick,robot,x,y,yaw\r\n0,epuck1,1,2,3\r\n0,epuck0,4,5,6\r\n", 2);
+  ASSERT_EQ(poses.size(), 2U);
+  EXPECT_EQ(poses[0].position.x, 4.0);
+  EXPECT_EQ(poses[1].yaw, 3.0);
 }
 
 TEST(StartPoses, MalformedTracesAreOneLineNamingTheProblem) {
@@ -96,4 +102,4 @@ TEST(StartPoses, ARunFromItsOwnStartIsTheRunItselfAndAnotherSeedKeepsTheGivenSta
 }
 
 }  // namespace
-}  // namespace sd::app
+}  // namespace sd

@@ -1,28 +1,17 @@
-#include "app/start_poses.hpp"
+#include "missions/start_trace.hpp"
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <optional>
-#include <sstream>
 #include <string_view>
 
-#include "app/errors.hpp"
 #include "core/bounded_file.hpp"
+#include "core/csv_fields.hpp"
 
-namespace sd::app {
+namespace sd {
 
 namespace {
-
-std::vector<std::string_view> fields(std::string_view line) {
-  std::vector<std::string_view> out;
-  for (std::size_t start = 0;;) {
-    const std::size_t comma = line.find(',', start);
-    out.push_back(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
-    if (comma == std::string_view::npos) return out;
-    start = comma + 1;
-  }
-}
 
 std::optional<double> number(std::string_view text) {
   double value = 0.0;
@@ -39,48 +28,62 @@ std::optional<int> robot_index(std::string_view name) {
   return value;
 }
 
+/// Hands out the text's lines one at a time, without their '\n'.
+class Lines {
+ public:
+  explicit Lines(std::string_view text) : rest_(text) {}
+  bool next(std::string_view& line) {
+    if (rest_.empty()) return false;
+    const std::size_t end = rest_.find('\n');
+    line = rest_.substr(0, end);
+    rest_.remove_prefix(end == std::string_view::npos ? rest_.size() : end + 1);
+    return true;
+  }
+
+ private:
+  std::string_view rest_;
+};
+
 }  // namespace
 
-std::vector<StartPose> start_poses_from_trace(const std::string& text, int robots) {
-  std::istringstream in(text);
-  std::string line;
-  if (!std::getline(in, line)) throw InvalidRequest("the start trace is empty");
-  if (!line.empty() && line.back() == '\r') line.pop_back();
-  const std::vector<std::string_view> header = fields(line);
+std::vector<StartPose> start_poses_from_trace(std::string_view text, int robots) {
+  Lines lines(text);
+  std::string_view line;
+  if (!lines.next(line)) throw MissionError("the start trace is empty");
+  const std::vector<std::string_view> header = csv_fields(line);
   auto column = [&header](std::string_view name) {
     for (std::size_t c = 0; c < header.size(); ++c)
       if (header[c] == name) return c;
-    throw InvalidRequest("the start trace has no column '" + std::string(name) + "' (line 1)");
+    throw MissionError("the start trace has no column '" + std::string(name) + "' (line 1)");
   };
   const std::size_t tick = column("tick"), robot = column("robot"), x = column("x"), y = column("y"), yaw = column("yaw");
   const std::size_t needed = std::max({tick, robot, x, y, yaw}) + 1;
 
   std::vector<std::optional<StartPose>> poses(static_cast<std::size_t>(robots));
   int found = 0;
-  for (int number_of_line = 2; std::getline(in, line); ++number_of_line) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty()) continue;
-    const std::vector<std::string_view> f = fields(line);
+  for (int number_of_line = 2; lines.next(line); ++number_of_line) {
+    if (line.empty() || line == "\r") continue;
+    const std::vector<std::string_view> f = csv_fields(line);
     const std::string at = "the start trace's line " + std::to_string(number_of_line);
-    if (f.size() < needed) throw InvalidRequest(at + " has " + std::to_string(f.size()) + " fields, not " + std::to_string(needed));
+    if (f.size() < needed) throw MissionError(at + " has " + std::to_string(f.size()) + " fields, not " + std::to_string(needed));
     if (f[tick] != "0") {
-      if (!number(f[tick])) throw InvalidRequest(at + ": the tick '" + std::string(f[tick].substr(0, 20)) + "' is no number");
+      if (!number(f[tick])) throw MissionError(at + ": the tick '" + std::string(f[tick].substr(0, 20)) + "' is no number");
       break;  // tick 0 comes first: the rest of the file is the run
     }
     const std::optional<int> r = robot_index(f[robot]);
     if (!r || *r < 0 || *r >= robots)
-      throw InvalidRequest(at + ": '" + std::string(f[robot].substr(0, 20)) + "' is no robot of the mission's " +
+      throw MissionError(at + ": '" + std::string(f[robot].substr(0, 20)) + "' is no robot of the mission's " +
                            std::to_string(robots) + " (epuck0 to epuck" + std::to_string(robots - 1) + ")");
     const std::optional<double> px = number(f[x]), py = number(f[y]), pyaw = number(f[yaw]);
-    if (!px || !py || !pyaw) throw InvalidRequest(at + ": x, y and yaw must be finite numbers");
-    if (std::abs(*px) > 10.0 || std::abs(*py) > 10.0) throw InvalidRequest(at + ": the robot lies beyond 10 m from the origin");
+    if (!px || !py || !pyaw) throw MissionError(at + ": x, y and yaw must be finite numbers");
+    if (std::abs(*px) > 10.0 || std::abs(*py) > 10.0) throw MissionError(at + ": the robot lies beyond 10 m from the origin");
     auto& slot = poses[static_cast<std::size_t>(*r)];
-    if (slot) throw InvalidRequest(at + ": robot " + std::string(f[robot]) + " appears twice at tick 0");
+    if (slot) throw MissionError(at + ": robot " + std::string(f[robot]) + " appears twice at tick 0");
     slot = StartPose{{*px, *py}, *pyaw};
     ++found;
   }
   if (found != robots)
-    throw InvalidRequest("the start trace has " + std::to_string(found) + " robots at tick 0; the mission has " +
+    throw MissionError("the start trace has " + std::to_string(found) + " robots at tick 0; the mission has " +
                          std::to_string(robots));
   std::vector<StartPose> out;
   out.reserve(poses.size());
@@ -88,18 +91,17 @@ std::vector<StartPose> start_poses_from_trace(const std::string& text, int robot
   return out;
 }
 
-Mission with_start_from(const Mission& mission, const std::string& path) {
-  if (path.empty()) return mission;
+Mission started_from_trace(const Mission& mission, const std::filesystem::path& path) {
   std::string text;
   try {
-    // A 20-robot, 1200-tick trace is about 2 MB; 64 MiB leaves room for long runs of large swarms.
+    // 64 MiB leaves room for long runs of large swarms.
     text = read_bounded_file(path, "start trace", std::size_t{64} << 20).text;
   } catch (const FileReadError& e) {
-    throw InvalidRequest(e.what());
+    throw MissionError(e.what());
   }
   Mission started = mission;
   started.start_poses = start_poses_from_trace(text, mission.robots);
   return started;
 }
 
-}  // namespace sd::app
+}  // namespace sd
