@@ -10,6 +10,7 @@
 #include "app/version.hpp"
 #include "cluster/slurm.hpp"
 #include "cluster/transfer.hpp"
+#include "core/json_integer.hpp"
 #include "missions/catalogue.hpp"
 #include "storage/clock.hpp"
 #include "storage/design_store.hpp"
@@ -290,20 +291,27 @@ json cluster_job_document(const storage::ClusterJob& job) {
   return out;
 }
 
+/// A count of the status document a cluster job wrote: range-checked, as the file comes from
+/// the cluster's disk (a damaged one fails in one line, never as undefined behaviour).
+template <class Int>
+Int integer(const json& object, const char* key) {
+  return checked_json_integer<Int>(object.at(key), std::string("the cluster's status document: ") + key);
+}
+
 storage::DesignProgress stored_progress_from_document(const json& d) {
   storage::DesignProgress p;
   p.started = d.at("started").get<bool>();
   p.phase = d.at("phase").get<std::string>();
-  p.iteration = d.at("iteration").get<int>();
-  p.nb_iterations = d.at("total_iterations").get<int>();
-  p.experiments_used = d.at("experiments_used").get<std::int64_t>();
-  p.budget = p.experiments_used + d.at("remaining_budget").get<std::int64_t>();
-  p.race_budget = d.at("race_budget").get<std::int64_t>();
-  p.race_configurations = d.at("race_configurations").get<int>();
-  p.configurations_sampled = d.at("configurations_sampled").get<std::int64_t>();
+  p.iteration = integer<int>(d, "iteration");
+  p.nb_iterations = integer<int>(d, "total_iterations");
+  p.experiments_used = integer<std::int64_t>(d, "experiments_used");
+  p.budget = p.experiments_used + integer<std::int64_t>(d, "remaining_budget");
+  p.race_budget = integer<std::int64_t>(d, "race_budget");
+  p.race_configurations = integer<int>(d, "race_configurations");
+  p.configurations_sampled = integer<std::int64_t>(d, "configurations_sampled");
   if (const auto& b = d.at("best"); !b.is_null())
-    p.best = storage::ConfigurationScore{b.at("id").get<int>(), b.at("configuration").get<std::string>(),
-                                         b.at("mean_score").get<double>(), b.at("runs").get<std::int64_t>()};
+    p.best = storage::ConfigurationScore{integer<int>(b, "id"), b.at("configuration").get<std::string>(),
+                                         b.at("mean_score").get<double>(), integer<std::int64_t>(b, "runs")};
   p.finish_reason = d.value("finish_reason", "");
   return p;
 }

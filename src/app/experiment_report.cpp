@@ -15,6 +15,7 @@
 #include "app/errors.hpp"
 #include "app/experiment_job.hpp"
 #include "control/config_string.hpp"
+#include "core/json_integer.hpp"
 #include "core/markup_text.hpp"
 #include "design/design_space.hpp"
 #include "evaluation/results_version.hpp"
@@ -247,7 +248,7 @@ void per_cell_tables(const Analysis& a, json& report) {
       for (const json* d : cell->designs) {
         ++chosen[(*d)["architecture"].get<std::string>()];
         seconds += (*d)["wall_seconds"].get<double>();
-        runs += (*d)["runs_used"].get<std::int64_t>() + static_cast<std::int64_t>((*d)["scores"].size());
+        runs += checked_json_integer<std::int64_t>((*d)["runs_used"], "experiment results: runs_used") + static_cast<std::int64_t>((*d)["scores"].size());
       }
       architectures.push_back({{"mission", m.key}, {"condition", c}, {"fsm", chosen["fsm"]}, {"bt", chosen["bt"]},
                                {"nn", chosen["nn"]}});

@@ -6,6 +6,7 @@
 #include "app/design_method.hpp"
 #include "app/evolution_job.hpp"
 #include "control/config_string.hpp"
+#include "core/json_integer.hpp"
 
 namespace sd::app {
 
@@ -77,10 +78,10 @@ class EvoStick final : public DesignMethod {
     const nlohmann::json doc = document(folder);
     const auto& history = doc.at("history");
     if (history.empty()) return {};
-    const std::int64_t per_generation = doc.at("runs").get<std::int64_t>() / static_cast<std::int64_t>(history.size());
+    const std::int64_t per_generation = checked_json_integer<std::int64_t>(doc.at("runs"), "evolution document: runs") / static_cast<std::int64_t>(history.size());
     std::vector<storage::ConvergencePoint> points;
     for (const auto& g : history) {
-      const int generation = g.at("generation").get<int>();
+      const int generation = checked_json_integer<int>(g.at("generation"), "evolution document: generation");
       points.push_back({generation, generation * per_generation, g.at("best_mean").get<double>(), 0});
     }
     return points;

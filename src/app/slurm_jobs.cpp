@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/errors.hpp"
+#include "core/json_integer.hpp"
 #include "design/design_space.hpp"
 
 namespace sd::app {
@@ -35,9 +36,9 @@ std::string settings_text(const ClusterJobRequest& r) {
 ClusterJobRequest merged(const std::string& stored, const ClusterJobRequest& given) {
   ClusterJobRequest r;
   const auto s = stored.empty() ? nlohmann::json::object() : nlohmann::json::parse(stored);
-  if (s.contains("nodes")) r.nodes = s["nodes"].get<int>();
-  if (s.contains("ntasks")) r.ntasks = s["ntasks"].get<int>();
-  if (s.contains("cpus_per_task")) r.cpus_per_task = s["cpus_per_task"].get<int>();
+  if (s.contains("nodes")) r.nodes = checked_json_integer<int>(s["nodes"], "cluster settings: nodes");
+  if (s.contains("ntasks")) r.ntasks = checked_json_integer<int>(s["ntasks"], "cluster settings: ntasks");
+  if (s.contains("cpus_per_task")) r.cpus_per_task = checked_json_integer<int>(s["cpus_per_task"], "cluster settings: cpus_per_task");
   r.time = s.value("time", "");
   r.partition = s.value("partition", "");
   r.account = s.value("account", "");

@@ -4,6 +4,8 @@
 // silently wraps to another number. Templated on the JSON type so core needs no JSON library.
 #include <cstdint>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace sd {
@@ -23,6 +25,15 @@ std::optional<Int> json_integer(const Json& value) {
     return static_cast<Int>(v);
   }
   return std::nullopt;
+}
+
+/// `value` as Int, or std::runtime_error naming `what` when it is no integer Int can hold. For
+/// the files SwarmDesign writes itself (a design's state, a cluster job's progress): a damaged
+/// or tampered one is refused in one line instead of converted with undefined behaviour.
+template <class Int, class Json>
+Int checked_json_integer(const Json& value, const std::string& what) {
+  if (const std::optional<Int> v = json_integer<Int>(value)) return *v;
+  throw std::runtime_error(what + " is not an integer in range");
 }
 
 }  // namespace sd

@@ -4,6 +4,9 @@
 #include <limits>
 #include <map>
 #include <stdexcept>
+#include <type_traits>
+
+#include "core/json_integer.hpp"
 
 namespace sd::design {
 
@@ -11,6 +14,41 @@ namespace {
 
 using nlohmann::json;
 constexpr int kFormatVersion = 1;
+
+template <class T>
+struct IsVector : std::false_type {};
+template <class T, class A>
+struct IsVector<std::vector<T, A>> : std::true_type {};
+
+/// A value of the state read into `out`; an integer (alone or in a list) only when it is one
+/// `out` can hold: a damaged state must fail in one line, and nlohmann's conversion of 1e300
+/// to int is undefined behaviour.
+template <class T>
+void read_value(const json& value, const std::string& what, T& out) {
+  if constexpr (std::is_same_v<T, char>) {  // flags (alive, rejected); std::in_range takes no plain char
+    out = static_cast<char>(checked_json_integer<signed char>(value, what));
+  } else if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>) {
+    out = checked_json_integer<T>(value, what);
+  } else if constexpr (IsVector<T>::value) {
+    if (!value.is_array()) throw std::runtime_error(what + " is not a list");
+    out.clear();
+    for (const json& item : value) {
+      typename T::value_type element{};
+      read_value(item, what + "[]", element);
+      out.push_back(element);
+    }
+  } else {
+    value.get_to(out);
+  }
+}
+template <class T>
+void read_field(const json& object, const char* key, T& out) {
+  read_value(object.at(key), std::string("design state: ") + key, out);
+}
+template <class T>
+T integer_at(const json& object, const char* key) {
+  return checked_json_integer<T>(object.at(key), std::string("design state: ") + key);
+}
 
 // JSON has no NaN or Inf: NA is null, infinities are the strings "Inf" / "-Inf".
 json number(double v) {
@@ -77,25 +115,25 @@ json race_to_json(const RaceState& r) {
 
 RaceState race_from_json(const json& j) {
   RaceState r;
-  j.at("config_ids").get_to(r.config_ids);
-  j.at("head").get_to(r.head);
-  j.at("future_begin").get_to(r.future_begin);
-  j.at("n_tasks").get_to(r.n_tasks);
-  j.at("n_new").get_to(r.n_new);
-  j.at("n_old").get_to(r.n_old);
-  j.at("has_elite_data").get_to(r.has_elite_data);
-  const auto rows = j.at("result_rows").get<std::size_t>();
+  read_field(j, "config_ids", r.config_ids);
+  read_field(j, "head", r.head);
+  read_field(j, "future_begin", r.future_begin);
+  read_field(j, "n_tasks", r.n_tasks);
+  read_field(j, "n_new", r.n_new);
+  read_field(j, "n_old", r.n_old);
+  read_field(j, "has_elite_data", r.has_elite_data);
+  const auto rows = integer_at<std::size_t>(j, "result_rows");
   r.results.assign(rows, std::vector<double>(r.config_ids.size(), std::nan("")));  // refilled from the log
-  j.at("alive").get_to(r.alive);
-  j.at("rejected").get_to(r.rejected);
-  j.at("is_elite").get_to(r.is_elite);
-  j.at("elite_safe").get_to(r.elite_safe);
-  j.at("no_elimination").get_to(r.no_elimination);
-  j.at("next_task").get_to(r.next_task);
-  j.at("experiments_used").get_to(r.experiments_used);
-  j.at("best").get_to(r.best);
-  j.at("finished").get_to(r.finished);
-  j.at("stop_reason").get_to(r.stop_reason);
+  read_field(j, "alive", r.alive);
+  read_field(j, "rejected", r.rejected);
+  read_field(j, "is_elite", r.is_elite);
+  read_field(j, "elite_safe", r.elite_safe);
+  read_field(j, "no_elimination", r.no_elimination);
+  read_field(j, "next_task", r.next_task);
+  read_field(j, "experiments_used", r.experiments_used);
+  read_field(j, "best", r.best);
+  read_field(j, "finished", r.finished);
+  read_field(j, "stop_reason", r.stop_reason);
   const std::size_t n = r.config_ids.size();
   if (r.alive.size() != n || r.rejected.size() != n || r.is_elite.size() != n)
     throw std::runtime_error("checkpoint: inconsistent race state");
@@ -106,13 +144,15 @@ RaceState race_from_json(const json& j) {
 
 json record_to_json(const ConfigRecord& r) { return json::array({r.id, r.parent, numbers(r.config.values)}); }
 ConfigRecord config_record_from_json(const json& j) {
-  return {j.at(0).get<int>(), j.at(1).get<int>(), Configuration{numbers(j.at(2))}};
+  return {checked_json_integer<int>(j.at(0), "design state: configuration id"), checked_json_integer<int>(j.at(1), "design state: configuration parent"),
+          Configuration{numbers(j.at(2))}};
 }
 json record_to_json(const ExperimentRecord& r) {
   return json::array({r.iteration, r.position, r.configuration_id, number(r.cost)});
 }
 ExperimentRecord experiment_record_from_json(const json& j) {
-  return {j.at(0).get<int>(), j.at(1).get<std::size_t>(), j.at(2).get<int>(), number(j.at(3))};
+  return {checked_json_integer<int>(j.at(0), "design state: experiment iteration"), checked_json_integer<std::size_t>(j.at(1), "design state: experiment position"),
+          checked_json_integer<int>(j.at(2), "design state: experiment configuration"), number(j.at(3))};
 }
 
 json state_to_json(const DesignState& s, bool with_history) {
@@ -169,56 +209,56 @@ json state_to_json(const DesignState& s, bool with_history) {
 DesignState state_from_json(const json& j, std::optional<History> history) {
   try {
     if (j.value("format", "") != "swarmdesign-irace-state") throw std::runtime_error("not a SwarmDesign design state");
-    if (j.at("version").get<int>() != kFormatVersion) throw std::runtime_error("unsupported design-state version");
+    if (integer_at<int>(j, "version") != kFormatVersion) throw std::runtime_error("unsupported design-state version");
     DesignState s;
-    j.at("fingerprint").get_to(s.fingerprint);
+    read_field(j, "fingerprint", s.fingerprint);
     s.phase = phase_of(j.at("phase").get<std::string>());
-    j.at("iteration").get_to(s.iteration);
-    j.at("nb_iterations").get_to(s.nb_iterations);
-    j.at("min_survival").get_to(s.min_survival);
-    j.at("budget").get_to(s.budget);
-    j.at("remaining_budget").get_to(s.remaining_budget);
-    j.at("experiments_used").get_to(s.experiments_used);
-    j.at("current_budget").get_to(s.current_budget);
-    j.at("nb_configurations").get_to(s.nb_configurations);
-    j.at("first_race").get_to(s.first_race);
+    read_field(j, "iteration", s.iteration);
+    read_field(j, "nb_iterations", s.nb_iterations);
+    read_field(j, "min_survival", s.min_survival);
+    read_field(j, "budget", s.budget);
+    read_field(j, "remaining_budget", s.remaining_budget);
+    read_field(j, "experiments_used", s.experiments_used);
+    read_field(j, "current_budget", s.current_budget);
+    read_field(j, "nb_configurations", s.nb_configurations);
+    read_field(j, "first_race", s.first_race);
     std::vector<ConfigRecord> configurations;
     if (history) {
       configurations = std::move(history->configurations);
     } else {
       for (const auto& c : j.at("configurations")) configurations.push_back(config_record_from_json(c));
     }
-    if (configurations.size() != j.at("configuration_count").get<std::size_t>())
+    if (configurations.size() != integer_at<std::size_t>(j, "configuration_count"))
       throw std::runtime_error("the configurations do not match the state (" + std::to_string(configurations.size()) +
-                               ", expected " + std::to_string(j.at("configuration_count").get<std::size_t>()) + ")");
+                               ", expected " + std::to_string(integer_at<std::size_t>(j, "configuration_count")) + ")");
     for (auto& c : configurations) {
       const int id = s.configurations.add(std::move(c.config), c.parent);
       if (id != c.id) throw std::runtime_error("configuration ids are not consecutive");
     }
-    j.at("rejected_ids").get_to(s.rejected_ids);
-    for (const auto& e : j.at("elites")) s.elites.push_back({e.at(0).get<int>(), e.at(1).get<double>()});
-    j.at("all_elites").get_to(s.all_elites);
-    j.at("soft_restarts").get_to(s.soft_restarts);
+    read_field(j, "rejected_ids", s.rejected_ids);
+    for (const auto& e : j.at("elites")) s.elites.push_back({checked_json_integer<int>(e.at(0), "design state: elite id"), e.at(1).get<double>()});
+    read_field(j, "all_elites", s.all_elites);
+    read_field(j, "soft_restarts", s.soft_restarts);
     for (const auto& m : j.at("model")) {
-      auto& entry = s.model.entries[m.at(0).get<int>()];
+      auto& entry = s.model.entries[checked_json_integer<int>(m.at(0), "design state: model entry")];
       for (const auto& v : m.at(1)) entry.push_back(numbers(v));
     }
     const auto& in = j.at("instances");
-    s.instances = InstanceList::replay(in.at("n_instances").get<std::size_t>(), in.at("stream_seed").get<std::uint64_t>(),
-                                       in.at("sample_instances").get<bool>(), in.at("blocks").get<std::size_t>());
-    j.at("positions_seen").get_to(s.positions_seen);
+    s.instances = InstanceList::replay(integer_at<std::size_t>(in, "n_instances"), integer_at<std::uint64_t>(in, "stream_seed"),
+                                       in.at("sample_instances").get<bool>(), integer_at<std::size_t>(in, "blocks"));
+    read_field(j, "positions_seen", s.positions_seen);
     if (history) {
       s.experiments = std::move(history->experiments);
     } else {
       for (const auto& e : j.at("experiments")) s.experiments.push_back(experiment_record_from_json(e));
     }
-    if (s.experiments.size() != j.at("experiment_count").get<std::size_t>())
+    if (s.experiments.size() != integer_at<std::size_t>(j, "experiment_count"))
       throw std::runtime_error("the experiment log does not match the state (" + std::to_string(s.experiments.size()) +
-                               " results, expected " + std::to_string(j.at("experiment_count").get<std::size_t>()) + ")");
+                               " results, expected " + std::to_string(integer_at<std::size_t>(j, "experiment_count")) + ")");
     if (!j.at("race").is_null()) s.race = race_from_json(j.at("race"));
     const auto& rng = j.at("rng");
-    for (int i = 0; i < 4; ++i) s.rng.s[i] = rng.at("s").at(static_cast<std::size_t>(i)).get<std::uint64_t>();
-    j.at("finish_reason").get_to(s.finish_reason);
+    for (int i = 0; i < 4; ++i) s.rng.s[i] = checked_json_integer<std::uint64_t>(rng.at("s").at(static_cast<std::size_t>(i)), "design state: rng.s");
+    read_field(j, "finish_reason", s.finish_reason);
     return s;
   } catch (const nlohmann::json::exception& e) {
     throw std::runtime_error(std::string("malformed design state: ") + e.what());

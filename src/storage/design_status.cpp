@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/json_integer.hpp"
 #include "storage/design_store.hpp"
 
 namespace sd::storage {
@@ -65,12 +66,12 @@ DesignProgress read_design_progress(const std::filesystem::path& folder) {
   const json state = json::parse(checkpoint.text(0));
   p.started = true;
   p.phase = state.at("phase").get<std::string>();
-  p.nb_iterations = state.at("nb_iterations").get<int>();
+  p.nb_iterations = checked_json_integer<int>(state.at("nb_iterations"), "design state: nb_iterations");
   const int finished_iterations = static_cast<int>(state.at("all_elites").size());
-  p.iteration = p.phase == "racing" ? state.at("iteration").get<int>() : std::max(1, finished_iterations);
+  p.iteration = p.phase == "racing" ? checked_json_integer<int>(state.at("iteration"), "design state: iteration") : std::max(1, finished_iterations);
   p.experiments_used = count(s.db(), "SELECT count(*) FROM experiments");
-  p.race_budget = state.at("current_budget").get<std::int64_t>();
-  p.race_configurations = state.at("nb_configurations").get<int>();
+  p.race_budget = checked_json_integer<std::int64_t>(state.at("current_budget"), "design state: current_budget");
+  p.race_configurations = checked_json_integer<int>(state.at("nb_configurations"), "design state: nb_configurations");
   if (p.phase == "finished") {  // the figures of the last race run, not of one refused for lack of budget
     p.nb_iterations = p.iteration;
     auto last = s.db().prepare("SELECT race_budget, configurations FROM races ORDER BY iteration DESC LIMIT 1");
@@ -83,11 +84,11 @@ DesignProgress read_design_progress(const std::filesystem::path& folder) {
   p.finish_reason = state.at("finish_reason").get<std::string>();
   const json& elites = state.at("elites");
   const json& race = state.at("race");
-  for (const json& elite : elites) p.elites.push_back(configuration_score(s, elite.at(0).get<int>()));
+  for (const json& elite : elites) p.elites.push_back(configuration_score(s, checked_json_integer<int>(elite.at(0), "design state: elites")));
   if (!elites.empty()) {
     p.best = p.elites.front();
-  } else if (!race.is_null() && race.at("next_task").get<std::size_t>() > 1) {
-    p.best = configuration_score(s, race.at("config_ids").at(race.at("best").get<std::size_t>()).get<int>());
+  } else if (!race.is_null() && checked_json_integer<std::size_t>(race.at("next_task"), "design state: race.next_task") > 1) {
+    p.best = configuration_score(s, checked_json_integer<int>(race.at("config_ids").at(checked_json_integer<std::size_t>(race.at("best"), "design state: race.best")), "design state: race.config_ids"));
   }
   return p;
 }

@@ -294,6 +294,37 @@ TEST(design_IteratedRace, RefusesAForeignCheckpoint) {
   EXPECT_THROW(state_from_json(state_to_json(a.state(), false), History{}), std::runtime_error);
 }
 
+// A damaged state is refused in one line naming the field; nlohmann's own conversion of 1e300
+// or 2^40 to int would be undefined behaviour or wrap to another number.
+TEST(design_IteratedRace, RefusesIntegersOutOfRangeInACheckpoint) {
+  const ParameterSpace s = synthetic_space();
+  ThreadedRunner runner(synthetic_cost, 1);
+  IteratedRace a(s, options(600, 1), runner);
+  a.advance();
+  const nlohmann::json good = state_to_json(a.state());
+  ASSERT_NO_THROW(state_from_json(good));
+  const auto refusal = [](const nlohmann::json& state) -> std::string {
+    try {
+      (void)state_from_json(state);
+    } catch (const std::runtime_error& e) {
+      return e.what();
+    }
+    return "(accepted)";
+  };
+  nlohmann::json huge = good;
+  huge["iteration"] = 1e300;
+  EXPECT_EQ(refusal(huge), "design state: iteration is not an integer in range");
+  nlohmann::json wraps = good;
+  wraps["nb_iterations"] = std::int64_t{1} << 40;
+  EXPECT_EQ(refusal(wraps), "design state: nb_iterations is not an integer in range");
+  nlohmann::json negative_list = good;
+  negative_list["all_elites"] = nlohmann::json::array({nlohmann::json::array({-1e200})});
+  EXPECT_EQ(refusal(negative_list), "design state: all_elites[][] is not an integer in range");
+  nlohmann::json seed = good;
+  seed["rng"]["s"][2] = -5;
+  EXPECT_EQ(refusal(seed), "design state: rng.s is not an integer in range");
+}
+
 TEST(design_IteratedRace, InitialConfigurationsAreRacedFirst) {
   const ParameterSpace s = synthetic_space();
   ThreadedRunner runner(synthetic_cost, 1);
