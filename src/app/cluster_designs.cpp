@@ -4,13 +4,13 @@
 #include <functional>
 #include <thread>
 
+#include "app/documents/design.hpp"
 #include "app/errors.hpp"
 #include "app/inputs.hpp"
 #include "app/projects.hpp"
 #include "app/version.hpp"
 #include "cluster/slurm.hpp"
 #include "cluster/transfer.hpp"
-#include "core/json_integer.hpp"
 #include "missions/catalogue.hpp"
 #include "storage/clock.hpp"
 #include "storage/design_store.hpp"
@@ -280,40 +280,6 @@ ClusterCheckReport check_project_cluster(Home& home, const storage::User& user, 
   report.checks = cluster::check_cluster(shell, report.project.cluster->binary_or_default(), version_line(),
                                          report.project.cluster->workdir_or_default());
   return report;
-}
-
-json cluster_job_document(const storage::ClusterJob& job) {
-  json out{{"job_id", job.job_id.empty() ? json() : json(job.job_id)},
-           {"folder", job.folder},
-           {"settings", job.settings.empty() ? json::object() : json::parse(job.settings)},
-           {"slurm_state", job.slurm_state.empty() ? json() : json(job.slurm_state)},
-           {"note", job.note.empty() ? json() : json(job.note)}};
-  return out;
-}
-
-/// A count of the status document a cluster job wrote: range-checked, as the file comes from
-/// the cluster's disk (a damaged one fails in one line, never as undefined behaviour).
-template <class Int>
-Int integer(const json& object, const char* key) {
-  return checked_json_integer<Int>(object.at(key), std::string("the cluster's status document: ") + key);
-}
-
-storage::DesignProgress stored_progress_from_document(const json& d) {
-  storage::DesignProgress p;
-  p.started = d.at("started").get<bool>();
-  p.phase = d.at("phase").get<std::string>();
-  p.iteration = integer<int>(d, "iteration");
-  p.nb_iterations = integer<int>(d, "total_iterations");
-  p.experiments_used = integer<std::int64_t>(d, "experiments_used");
-  p.budget = p.experiments_used + integer<std::int64_t>(d, "remaining_budget");
-  p.race_budget = integer<std::int64_t>(d, "race_budget");
-  p.race_configurations = integer<int>(d, "race_configurations");
-  p.configurations_sampled = integer<std::int64_t>(d, "configurations_sampled");
-  if (const auto& b = d.at("best"); !b.is_null())
-    p.best = storage::ConfigurationScore{integer<int>(b, "id"), b.at("configuration").get<std::string>(),
-                                         b.at("mean_score").get<double>(), integer<std::int64_t>(b, "runs")};
-  p.finish_reason = d.value("finish_reason", "");
-  return p;
 }
 
 }  // namespace sd::app

@@ -69,8 +69,5 @@ struct ClusterCheckReport {
 ClusterCheckReport check_project_cluster(Home& home, const storage::User& user,
                                          const std::optional<std::string>& project = std::nullopt);
 
-nlohmann::json cluster_job_document(const storage::ClusterJob& job);
-/// storage::DesignProgress back from stored_progress_document (a cluster's `design-status --json`).
-storage::DesignProgress stored_progress_from_document(const nlohmann::json& document);
 
 }  // namespace sd::app

@@ -1,7 +1,6 @@
 #include "app/design_backends.hpp"
 
 #include "app/cluster_designs.hpp"
-#include "app/documents.hpp"
 #include "app/errors.hpp"
 #include "app/local_processes.hpp"
 #include "app/projects.hpp"
@@ -77,19 +76,6 @@ DesignStatus design_status(Home& home, const storage::User& user, bool complete,
     if (d.state != storage::DesignState::running) throw;
   }
   return status;
-}
-
-nlohmann::json status_document(const DesignStatus& status, bool complete) {
-  if (!status.design) return {{"project", status.project.name}, {"design", nullptr}};
-  nlohmann::json out{{"project", status.project.name},
-                     {"design", design_row_document(*status.design)},
-                     {"progress", stored_progress_document(status.progress)}};
-  if (status.cluster_job) out["cluster_job"] = cluster_job_document(*status.cluster_job);
-  if (complete) {
-    out["race_log"] = race_log_document(status.race_log);
-    out["convergence"] = convergence_document(status.convergence);
-  }
-  return out;
 }
 
 }  // namespace sd::app

@@ -40,6 +40,5 @@ struct DesignStatus {
 };
 DesignStatus design_status(Home& home, const storage::User& user, bool complete,
                            const std::optional<std::string>& project = std::nullopt);
-nlohmann::json status_document(const DesignStatus& status, bool complete);
 
 }  // namespace sd::app

@@ -1,7 +1,8 @@
 #pragma once
 // Every JSON document of the application — what the CLI's --json prints and a web server sends
 // (responses, WebSocket/SSE stream) — made in one place, src/app/documents/, one file per kind:
-//   design       a design's report, live and stored progress, race log, convergence, project row
+//   design       a design's report, live and stored progress, race log, convergence, project row,
+//                Slurm job, `status` (and the stored progress read back from a cluster)
 //   accounts     a project, a user's projects, the users
 //   missions     the catalogue, one mission, a batch of scores
 //   experiments  an experiment's plan (with its duration estimate) and the experiments' progress

@@ -7,6 +7,7 @@
 
 #include "app/accounts.hpp"
 #include "app/design_backends.hpp"
+#include "app/documents/design.hpp"
 #include "app/experiment_job.hpp"
 #include "app/export_argos.hpp"
 #include "app/project_design.hpp"

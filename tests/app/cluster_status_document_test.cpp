@@ -7,7 +7,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "app/cluster_designs.hpp"
 #include "app/documents/design.hpp"
 
 namespace sd::app {

@@ -1,5 +1,6 @@
 #include "app/documents/design.hpp"
 
+#include "core/json_integer.hpp"
 #include "storage/clock.hpp"
 
 namespace sd::app {
@@ -104,6 +105,58 @@ json design_row_document(const storage::Design& d) {
           {"created", storage::format_time(d.created_at)},
           {"best_configuration", d.best_config ? json(*d.best_config) : json()},
           {"best_score", d.best_score ? json(*d.best_score) : json()}};
+}
+
+json cluster_job_document(const storage::ClusterJob& job) {
+  json out{{"job_id", job.job_id.empty() ? json() : json(job.job_id)},
+           {"folder", job.folder},
+           {"settings", job.settings.empty() ? json::object() : json::parse(job.settings)},
+           {"slurm_state", job.slurm_state.empty() ? json() : json(job.slurm_state)},
+           {"note", job.note.empty() ? json() : json(job.note)}};
+  return out;
+}
+
+namespace {
+
+/// A count of the status document a cluster job wrote: range-checked, as the file comes from
+/// the cluster's disk (a damaged one fails in one line, never as undefined behaviour).
+template <class Int>
+Int integer(const json& object, const char* key) {
+  return checked_json_integer<Int>(object.at(key), std::string("the cluster's status document: ") + key);
+}
+
+}  // namespace
+
+storage::DesignProgress stored_progress_from_document(const json& d) {
+  storage::DesignProgress p;
+  p.started = d.at("started").get<bool>();
+  p.phase = d.at("phase").get<std::string>();
+  p.iteration = integer<int>(d, "iteration");
+  p.nb_iterations = integer<int>(d, "total_iterations");
+  p.experiments_used = integer<std::int64_t>(d, "experiments_used");
+  p.budget = p.experiments_used + integer<std::int64_t>(d, "remaining_budget");
+  p.race_budget = integer<std::int64_t>(d, "race_budget");
+  p.race_configurations = integer<int>(d, "race_configurations");
+  p.configurations_sampled = integer<std::int64_t>(d, "configurations_sampled");
+  if (const auto& b = d.at("best"); !b.is_null())
+    p.best = storage::ConfigurationScore{integer<int>(b, "id"), b.at("configuration").get<std::string>(),
+                                         b.at("mean_score").get<double>(), integer<std::int64_t>(b, "runs")};
+  p.finish_reason = d.value("finish_reason", "");
+  return p;
+}
+
+
+nlohmann::json status_document(const DesignStatus& status, bool complete) {
+  if (!status.design) return {{"project", status.project.name}, {"design", nullptr}};
+  nlohmann::json out{{"project", status.project.name},
+                     {"design", design_row_document(*status.design)},
+                     {"progress", stored_progress_document(status.progress)}};
+  if (status.cluster_job) out["cluster_job"] = cluster_job_document(*status.cluster_job);
+  if (complete) {
+    out["race_log"] = race_log_document(status.race_log);
+    out["convergence"] = convergence_document(status.convergence);
+  }
+  return out;
 }
 
 }  // namespace sd::app
