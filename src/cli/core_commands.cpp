@@ -100,8 +100,8 @@ void register_evaluate(CLI::App& app, Context& context) {
                   "Arlequin module set that runs modules 50-55: swarmdesign (the shipped networks, default), demiurge "
                   "(Demiurge's networks and machinery) or a folder of the six weight documents");
   cmd->add_option("--start-from", o->start_from,
-                  "Start every run from the robots' poses at tick 0 of a trace FILE (ARGoS' set-4 traces or "
-                  "--trace output, uncompressed); the seed then draws only noise");
+                  "Start every run from the robots' poses at tick 0 of a trace FILE (ARGoS' traces, e.g. "
+                  "tests/data/argos-starts/, or --trace output, uncompressed); the seed then draws only noise");
   cmd->add_flag("--json", o->json, "Print one JSON document");
   add_control_software_options(*cmd, o->software);
   cmd->footer(
