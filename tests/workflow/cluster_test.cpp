@@ -2,15 +2,18 @@
 // (munge, slurmctld, slurmd) and an sshd on 127.0.0.1 with a key made for the test, both
 // started by tests/cluster/services/ and stopped at the end. The project's designs are
 // submitted through the local path (this machine is the login node) and over ssh, followed by
-// status to the end, cancelled with stop-design, refused by sbatch, cut by their time limit.
+// status to the end, cancelled with stop-design, refused by sbatch, cut by their time limit;
+// and the web app's Start and Stop of a cluster project go to Slurm the same way.
 #include <gtest/gtest.h>
 #include <pwd.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <fstream>
 #include <thread>
 
+#include "web/web_client.hpp"
 #include "workflow/design_helpers.hpp"
 #include "workflow/workflow_fixture.hpp"
 
@@ -153,6 +156,40 @@ TEST_F(cluster_projects, StopDesignCancelsTheJobAndRunDesignResumesItWhereItStop
                                                           s["progress"]["experiments_used"].get<int>() > used; }, 120s);
   EXPECT_EQ(resumed["design"]["id"], after["design"]["id"]);  // the same design, not a new one
   sd_ok({"stop-design"});
+}
+
+// The web app's Start in a cluster project submits a Slurm job (not a thread of the server),
+// its status page follows the job, and its Stop cancels it: the same backend as the CLI's.
+TEST_F(cluster_projects, FromTheWebAClusterProjectsStartGoesToSlurmAndStopCancelsIt) {
+  cluster_project("webslurm", this_host(), 60000);
+  // The server runs in this process and submits with this process' environment.
+  for (const auto& [name, value] : variables_) ::setenv(name.c_str(), value.c_str(), 1);
+  RunningServer server(home());
+  WebClient browser(server.port());
+  ASSERT_TRUE(browser.sign_in("ada", "ada-secret-pw")) << browser.last_refusal();
+
+  const Answer started = browser.post("/api/projects/webslurm/designs",
+                                      {{"architectures", "fsm"}, {"flavours", "chocolate"}, {"seed", "5"}});
+  ASSERT_EQ(started.status, 200) << started.text;
+  const auto page = [&browser] { return browser.get("/api/projects/webslurm/status").body; };
+  json running;
+  const auto end = std::chrono::steady_clock::now() + 120s;
+  while (std::chrono::steady_clock::now() < end) {
+    running = page();
+    if (running["cluster_job"]["slurm_state"] == "RUNNING" && running["progress"]["experiments_used"].get<int>() > 0) break;
+    std::this_thread::sleep_for(500ms);
+  }
+  ASSERT_EQ(running["cluster_job"]["slurm_state"], "RUNNING") << running.dump(2);
+  EXPECT_FALSE(running["running_here"].get<bool>()) << "a cluster project's design runs in Slurm, not in the server";
+  EXPECT_EQ(running["design"]["id"], started.body["id"]);
+  // The CLI sees the same job.
+  EXPECT_EQ(status()["cluster_job"]["job_id"], running["cluster_job"]["job_id"]);
+
+  const Answer stopped = browser.post("/api/projects/webslurm/designs/stop", json::object());
+  ASSERT_EQ(stopped.status, 200) << stopped.text;
+  const json after = page();
+  EXPECT_EQ(after["design"]["state"], "interrupted") << after.dump(2);
+  EXPECT_EQ(after["cluster_job"]["slurm_state"], "CANCELLED");
 }
 
 TEST_F(cluster_projects, OverSshADesignIsSubmittedFollowedAndBroughtBack) {
