@@ -8,6 +8,7 @@
 #include <string>
 
 #include "app/documents/design.hpp"
+#include "refusal.hpp"
 
 namespace sd::app {
 namespace {
@@ -45,13 +46,8 @@ TEST(ClusterStatusDocument, WhatTheClusterPrintsComesBackUnchanged) {
 
 TEST(ClusterStatusDocument, ADamagedDocumentIsRefusedNamingTheField) {
   const nlohmann::json good = stored_progress_document(progress());
-  const auto refusal = [](const nlohmann::json& document) -> std::string {
-    try {
-      (void)stored_progress_from_document(document);
-    } catch (const std::runtime_error& e) {
-      return e.what();
-    }
-    return "(accepted)";
+  const auto refusal = [](const nlohmann::json& document) {
+    return test::refusal_of<std::runtime_error>([&] { return stored_progress_from_document(document); });
   };
   nlohmann::json huge = good;
   huge["iteration"] = 1e300;

@@ -7,6 +7,7 @@
 
 #include "design/fsm_space.hpp"
 #include "design/iterated_race.hpp"
+#include "refusal.hpp"
 
 using namespace sd::design;
 
@@ -303,13 +304,8 @@ TEST(design_IteratedRace, RefusesIntegersOutOfRangeInACheckpoint) {
   a.advance();
   const nlohmann::json good = state_to_json(a.state());
   ASSERT_NO_THROW(state_from_json(good));
-  const auto refusal = [](const nlohmann::json& state) -> std::string {
-    try {
-      (void)state_from_json(state);
-    } catch (const std::runtime_error& e) {
-      return e.what();
-    }
-    return "(accepted)";
+  const auto refusal = [](const nlohmann::json& state) {
+    return sd::test::refusal_of<std::runtime_error>([&] { return state_from_json(state); });
   };
   nlohmann::json huge = good;
   huge["iteration"] = 1e300;

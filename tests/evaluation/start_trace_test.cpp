@@ -11,6 +11,7 @@
 #include "control/config_string.hpp"
 #include "evaluation/simulation.hpp"
 #include "missions/catalogue.hpp"
+#include "refusal.hpp"
 
 namespace sd {
 namespace {
@@ -29,12 +30,7 @@ class StartRecorder : public TickObserver {
 };
 
 std::string refusal(const std::string& text, int robots) {
-  try {
-    (void)start_poses_from_trace(text, robots);
-  } catch (const MissionError& e) {
-    return e.what();
-  }
-  return "(accepted)";
+  return test::refusal_of<MissionError>([&] { return start_poses_from_trace(text, robots); });
 }
 
 TEST(StartPoses, EachRobotGetsItsPoseWhateverTheRowOrderAndLaterTicksAreNotRead) {

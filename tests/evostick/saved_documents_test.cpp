@@ -11,6 +11,7 @@
 
 #include "evostick/saved_evolution.hpp"
 #include "evostick/weight_document.hpp"
+#include "refusal.hpp"
 
 namespace {
 
@@ -29,12 +30,7 @@ Settings some_settings() {
 }
 
 std::string refusal(const json& document) {
-  try {
-    (void)sd::evostick::settings_from_json(document);
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "(accepted)";
+  return sd::test::refusal_of<std::invalid_argument>([&] { return sd::evostick::settings_from_json(document); });
 }
 
 TEST(EvoStickSettings, ComeBackAsWritten) {
@@ -92,12 +88,7 @@ class SavedEvolutionFile : public ::testing::Test {
   json document() const { return json::parse(std::ifstream(file_)); }
   void rewrite(const json& doc) const { std::ofstream(file_, std::ios::trunc) << doc.dump(); }
   std::string refusal() const {
-    try {
-      (void)sd::evostick::read_saved_evolution(file_);
-    } catch (const std::runtime_error& e) {
-      return e.what();
-    }
-    return "(accepted)";
+    return sd::test::refusal_of<std::runtime_error>([this] { return sd::evostick::read_saved_evolution(file_); });
   }
 
   std::filesystem::path file_;

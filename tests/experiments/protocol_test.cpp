@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "experiments/protocol.hpp"
+#include "refusal.hpp"
 
 namespace sd::experiments {
 namespace {
@@ -73,12 +74,7 @@ TEST(experiments_Protocol, FileRoundTripAndOverrides) {
 }
 
 std::string error_of(const json& document) {
-  try {
-    protocol_from_json(document);
-  } catch (const ProtocolError& e) {
-    return e.what();
-  }
-  return "(accepted)";
+  return sd::test::refusal_of<ProtocolError>([&] { return protocol_from_json(document); });
 }
 
 // Found by fuzz_protocol: a number no double holds is nlohmann's out_of_range, which escaped
