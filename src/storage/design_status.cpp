@@ -33,6 +33,12 @@ class Snapshot {
   DesignStore store_;
 };
 
+/// An integer of the saved design state, range-checked (a damaged state fails in one line).
+template <class Int>
+Int state_integer(const json& value, const char* what) {
+  return checked_json_integer<Int>(value, std::string("design state: ") + what);
+}
+
 std::int64_t count(Database& db, const std::string& sql) {
   auto q = db.prepare(sql);
   q.step();
@@ -66,12 +72,12 @@ DesignProgress read_design_progress(const std::filesystem::path& folder) {
   const json state = json::parse(checkpoint.text(0));
   p.started = true;
   p.phase = state.at("phase").get<std::string>();
-  p.nb_iterations = checked_json_integer<int>(state.at("nb_iterations"), "design state: nb_iterations");
+  p.nb_iterations = state_integer<int>(state.at("nb_iterations"), "nb_iterations");
   const int finished_iterations = static_cast<int>(state.at("all_elites").size());
-  p.iteration = p.phase == "racing" ? checked_json_integer<int>(state.at("iteration"), "design state: iteration") : std::max(1, finished_iterations);
+  p.iteration = p.phase == "racing" ? state_integer<int>(state.at("iteration"), "iteration") : std::max(1, finished_iterations);
   p.experiments_used = count(s.db(), "SELECT count(*) FROM experiments");
-  p.race_budget = checked_json_integer<std::int64_t>(state.at("current_budget"), "design state: current_budget");
-  p.race_configurations = checked_json_integer<int>(state.at("nb_configurations"), "design state: nb_configurations");
+  p.race_budget = state_integer<std::int64_t>(state.at("current_budget"), "current_budget");
+  p.race_configurations = state_integer<int>(state.at("nb_configurations"), "nb_configurations");
   if (p.phase == "finished") {  // the figures of the last race run, not of one refused for lack of budget
     p.nb_iterations = p.iteration;
     auto last = s.db().prepare("SELECT race_budget, configurations FROM races ORDER BY iteration DESC LIMIT 1");
@@ -84,11 +90,12 @@ DesignProgress read_design_progress(const std::filesystem::path& folder) {
   p.finish_reason = state.at("finish_reason").get<std::string>();
   const json& elites = state.at("elites");
   const json& race = state.at("race");
-  for (const json& elite : elites) p.elites.push_back(configuration_score(s, checked_json_integer<int>(elite.at(0), "design state: elites")));
+  for (const json& elite : elites) p.elites.push_back(configuration_score(s, state_integer<int>(elite.at(0), "elites")));
   if (!elites.empty()) {
     p.best = p.elites.front();
-  } else if (!race.is_null() && checked_json_integer<std::size_t>(race.at("next_task"), "design state: race.next_task") > 1) {
-    p.best = configuration_score(s, checked_json_integer<int>(race.at("config_ids").at(checked_json_integer<std::size_t>(race.at("best"), "design state: race.best")), "design state: race.config_ids"));
+  } else if (!race.is_null() && state_integer<std::size_t>(race.at("next_task"), "race.next_task") > 1) {
+    const auto best = state_integer<std::size_t>(race.at("best"), "race.best");
+    p.best = configuration_score(s, state_integer<int>(race.at("config_ids").at(best), "race.config_ids"));
   }
   return p;
 }
