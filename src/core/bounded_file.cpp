@@ -62,6 +62,11 @@ FileText read_bounded_file(const std::filesystem::path& path, const std::string&
     throw FileReadError(FileProblem::Outside, named + ": not a file you may read");
   struct stat info {};
   if (::fstat(file.fd, &info) != 0) throw FileReadError(FileProblem::Unreadable, "cannot read " + named);
+  // A hard link has no "real path" elsewhere: a second name for another user's file, planted in
+  // one's own folder, resolves inside it. A confined reader therefore reads only files with one
+  // name; SwarmDesign never makes a second one.
+  if (allowed && S_ISREG(info.st_mode) && info.st_nlink > 1)
+    throw FileReadError(FileProblem::Outside, named + ": not a file you may read");
   if (!S_ISREG(info.st_mode)) throw FileReadError(FileProblem::NotRegular, named + " is not a regular file");
   const auto too_large = [&] {
     return FileReadError(FileProblem::TooLarge, named + " is larger than " + human_bytes(max_bytes) +

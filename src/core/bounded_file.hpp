@@ -37,8 +37,9 @@ struct FileText {
 using PathRule = std::function<bool(const std::filesystem::path& real_path)>;
 
 /// The file's whole text. `allowed` (if given) is asked about the real path of the file that
-/// was opened, before anything else is said about it. Throws FileReadError whose message
-/// names `what` and the path as given, and never quotes the file.
+/// was opened, before anything else is said about it; a reader so confined also refuses a file
+/// with more than one name (a hard link may name a file from outside), as Outside. Throws
+/// FileReadError whose message names `what` and the path as given, and never quotes the file.
 FileText read_bounded_file(const std::filesystem::path& path, const std::string& what,
                            std::size_t max_bytes = kMaxInputFileBytes, const PathRule& allowed = {});
 

@@ -2,6 +2,7 @@
 
 #include <httplib.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 
 #include <stdexcept>
 
@@ -15,6 +16,9 @@ WebServer::WebServer(WebServerOptions options)
     : options_(std::move(options)),
       context_(std::make_unique<WebContext>(options_.home, options_.web_root, options_.sign_in)),
       server_(std::make_unique<httplib::Server>()) {
+  // A shared server keeps every user's files to itself: what it creates (projects, designs,
+  // saved software, exports) is 0600, its folders 0700, whatever umask it was started with.
+  ::umask(077);
   httplib::Server& s = *server_;
   s.new_task_queue = [] { return new httplib::ThreadPool(kServerThreads); };
   s.set_payload_max_length(kMaxRequestBytes);
@@ -31,6 +35,11 @@ WebServer::WebServer(WebServerOptions options)
   });
 
   s.set_pre_routing_handler([this](const httplib::Request& request, httplib::Response& response) {
+    // Two Host headers: a proxy and this server could each read another one; neither is taken.
+    if (request.get_header_value_count("Host") > 1) {
+      send_json(response, {{"error", "the request names its host more than once"}}, 400);
+      return httplib::Server::HandlerResponse::Handled;
+    }
     if (hosts_.allows(request.get_header_value("Host"))) return httplib::Server::HandlerResponse::Unhandled;
     send_json(response, {{"error", "this server does not answer requests for the host named in the request"}}, 403);
     return httplib::Server::HandlerResponse::Handled;

@@ -201,6 +201,58 @@ TEST_F(WebSecurity, ALinkPlantedInOnesOwnProjectDoesNotLeadOut) {
   EXPECT_FALSE(std::filesystem::exists(root_ / "not-yet"));
 }
 
+TEST_F(WebSecurity, AHardLinkPlantedInOnesOwnProjectIsNotRead) {
+  serve();
+  const std::string bobs = project_with_own_mission(*bob_, "bob", "bobs");
+  project_with_own_mission(*alice_, "alice", "mine");
+  const auto folder = projects_of("alice") / "mine";
+  // A hard link resolves inside her folder: no link to follow, yet another user's file.
+  std::ofstream(root_ / "secret.json") << "{\"name\": \"" << kSecret << "\"}";
+  std::filesystem::create_hard_link(bobs, folder / "hard-bob.json");
+  std::filesystem::create_hard_link(root_ / "secret.json", folder / "hard-secret.json");
+  for (const auto& link : {folder / "hard-bob.json", folder / "hard-secret.json"})
+    expect_refused_like_a_missing_file(*alice_, link.string());
+  EXPECT_TRUE(alice_->get("/api/projects").body.size() == 1u) << "no project may be made on a hard link";
+  // A project pointed at it by other means (the CLI) is neither listed nor designed.
+  {
+    app::Home home(root_ / "home");
+    storage::Projects(home.workspace(), app::sign_in_here(home, "alice", "alice-password").user)
+        .set_mission((folder / "hard-bob.json").string());
+  }
+  for (const json& m : alice_->get("/api/missions").body) EXPECT_NE(m.at("name"), (folder / "hard-bob.json").string());
+  EXPECT_EQ(alice_->post("/api/projects/mine/designs", json::object()).status, 404);
+  // Nor is a hard-linked file read as saved control software.
+  std::ofstream(root_ / "secret.txt") << kSecret;
+  std::filesystem::create_directories(folder / "software");
+  std::filesystem::create_hard_link(root_ / "secret.txt", folder / "software" / "stolen.txt");
+  const Answer saved = alice_->get("/api/projects/mine/software");
+  ASSERT_EQ(saved.status, 200) << saved.text;
+  EXPECT_TRUE(saved.body.empty()) << saved.text;
+  // Bob's own file, with its one name, still works for him.
+  std::filesystem::remove(folder / "hard-bob.json");
+  EXPECT_EQ(bob_->get("/api/missions/svg?name=" + bobs).status, 200);
+}
+
+TEST_F(WebSecurity, WhatTheServerCreatesIsPrivateToItsOwner) {
+  ::umask(022);  // a usual umask, which would leave files 0644 and folders 0755
+  serve();
+  ASSERT_EQ(alice_->post("/api/projects", {{"name", "fresh"}, {"mission", "aac"}, {"budget", "300"}}).status, 200);
+  ASSERT_EQ(alice_->post("/api/projects/fresh/software", {{"name", "walker"}, {"text", kOneStateFsm}}).status, 200);
+  const auto mode = [](const std::filesystem::path& p) {
+    struct stat info {};
+    EXPECT_EQ(::stat(p.c_str(), &info), 0) << p;
+    return info.st_mode & 0777;
+  };
+  const auto project = projects_of("alice") / "fresh";
+  EXPECT_EQ(mode(project), 0700u);
+  EXPECT_EQ(mode(project / "software"), 0700u);
+  EXPECT_EQ(mode(project / "software" / "walker.txt"), 0600u);
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(root_ / "home")) {
+    if (entry.is_symlink()) continue;
+    EXPECT_EQ(mode(entry.path()) & 077, 0u) << entry.path() << " is open to others";
+  }
+}
+
 TEST_F(WebSecurity, DevicesFifosAndHugeFilesAreRefusedAtOnceWithMemoryFlat) {
   serve();
   project_with_own_mission(*alice_, "alice", "mine");
@@ -312,6 +364,18 @@ TEST_F(WebSecurity, ARequestNamingAForeignHostIsRefused) {
   }
   for (const char* host : {"127.0.0.1", "localhost", "LOCALHOST", "[::1]", "lab.example.org"})
     EXPECT_EQ(with_host(host, port, "/api/session")->status, 200) << host;
+}
+
+TEST_F(WebSecurity, ARequestNamingItsHostTwiceIsRefused) {
+  serve();
+  httplib::Client raw("127.0.0.1", server_->port());
+  const std::string mine = "127.0.0.1:" + std::to_string(server_->port());
+  for (const char* second : {"attacker.example", "127.0.0.1"}) {
+    const auto answer = raw.Get("/api/session", httplib::Headers{{"Host", mine}, {"Host", second}, {"Cookie", alice_->cookie()}});
+    ASSERT_TRUE(answer);
+    EXPECT_EQ(answer->status, 400) << second;
+  }
+  EXPECT_EQ(raw.Get("/api/session", httplib::Headers{{"Host", mine}, {"Cookie", alice_->cookie()}})->status, 200);
 }
 
 TEST(HostCheck, ALoopbackServerAnswersItsNamesAndAnOpenServerAlsoAnyIpAndTheAllowedNames) {
