@@ -17,34 +17,40 @@ namespace sd {
 
 namespace {
 
-// ARGoS' AAC placements of seeds 1-5 (the set-4 Maple traces; tests/data/argos-starts/README.md).
-// The loop functions of SCA, of Chocolate's and Maple's AAC and of Demiurge's Arlequin AAC place
-// the robots alike seed by seed: the shelter is added after placement, and the traces of both
-// missions start identically.
-constexpr const char* kAacStarts = "argos-starts/aac_seed{seed}.csv";
+// ARGoS' own tick-0 poses, seeds 1-20 (set 7; tests/data/argos-starts/README.md), one folder per
+// ARGoS mission file. The behaviour-tree missions have none of their own: ARGoS places their
+// robots exactly as in the FSM missions of the same name.
+constexpr const char* kAacStarts = "argos-starts/aac_120s/seed{seed}.csv";
+constexpr const char* kForagingStarts = "argos-starts/foraging_120s/seed{seed}.csv";
 
 }  // namespace
 
 const std::vector<ArgosReferenceGroup>& argos_reference_groups() {
   static const std::vector<ArgosReferenceGroup> groups{
       {"aac", "argos-reference.csv", "aac", "", "aac", 0, true, "", kAacStarts},
-      {"foraging", "argos-reference.csv", "foraging", "", "foraging", 0, true},
-      {"sca", "argos-reference-2.csv", "sca", "fsm", "sca", 0, false, "", kAacStarts},
-      {"lcn", "argos-reference-2.csv", "lcn", "fsm", "lcn", 0, false},
+      {"foraging", "argos-reference.csv", "foraging", "", "foraging", 0, true, "", kForagingStarts},
+      {"sca", "argos-reference-2.csv", "sca", "fsm", "sca", 0, false, "", "argos-starts/sca_120s/seed{seed}.csv"},
+      {"lcn", "argos-reference-2.csv", "lcn", "fsm", "lcn", 0, false, "", "argos-starts/lcn_120s/seed{seed}.csv"},
       // ARGoS ran the two-spot aggregation for 180 s; the catalogue's lasts 250 s.
-      {"aggregation180", "argos-reference-2.csv", "aggregation180", "fsm", "aggregation", 180, false},
+      {"aggregation180", "argos-reference-2.csv", "aggregation180", "fsm", "aggregation", 180, false, "",
+       "argos-starts/aggregation_180s/seed{seed}.csv"},
       {"aac_bt", "argos-reference-2.csv", "aac", "bt", "aac", 0, false, "", kAacStarts},
-      {"foraging_bt", "argos-reference-2.csv", "foraging", "bt", "foraging", 0, false},
+      {"foraging_bt", "argos-reference-2.csv", "foraging", "bt", "foraging", 0, false, "", kForagingStarts},
       {"tutti_aggregation", "argos-reference-3.csv", "tutti-aggregation", "fsm", "tutti-aggregation", 0, false, "",
-       "argos-starts/tutti_aggregation_seed{seed}.csv"},
+       "argos-starts/tutti_aggregation_120s/seed{seed}.csv"},
       {"tutti_stop", "argos-reference-3.csv", "tutti-stop", "fsm", "tutti-stop", 0, false},
       {"tutti_foraging", "argos-reference-3.csv", "tutti-foraging", "fsm", "tutti-foraging", 0, false},
-      {"grid_exploration", "argos-reference-5.csv", "grid-exploration", "fsm", "grid-exploration", 0, false},
-      {"coconut_aggregation", "argos-reference-5.csv", "coconut-aggregation", "fsm", "coconut-aggregation", 0, false},
-      {"coconut_foraging", "argos-reference-5.csv", "coconut-foraging", "fsm", "coconut-foraging", 0, false},
+      {"grid_exploration", "argos-reference-5.csv", "grid-exploration", "fsm", "grid-exploration", 0, false, "",
+       "argos-starts/grid_exploration_120s/seed{seed}.csv"},
+      {"coconut_aggregation", "argos-reference-5.csv", "coconut-aggregation", "fsm", "coconut-aggregation", 0, false, "",
+       "argos-starts/coconut_aggregation_120s/seed{seed}.csv"},
+      {"coconut_foraging", "argos-reference-5.csv", "coconut-foraging", "fsm", "coconut-foraging", 0, false, "",
+       "argos-starts/coconut_foraging_120s/seed{seed}.csv"},
       // Demiurge's Arlequin: its own six networks and machinery, not SwarmDesign's shipped set.
-      {"arlequin_aac", "argos-reference-6.csv", "aac", "fsm", "aac", 0, false, "demiurge", kAacStarts},
-      {"aggregation_xor", "argos-reference-6.csv", "aggregation-xor", "fsm", "aggregation-xor", 0, false, "demiurge"},
+      {"arlequin_aac", "argos-reference-6.csv", "aac", "fsm", "aac", 0, false, "demiurge",
+       "argos-starts/demiurge_aac_120s/seed{seed}.csv"},
+      {"aggregation_xor", "argos-reference-6.csv", "aggregation-xor", "fsm", "aggregation-xor", 0, false, "demiurge",
+       "argos-starts/aggregation_xor_180s/seed{seed}.csv"},
   };
   return groups;
 }
