@@ -11,21 +11,23 @@
 // Seeds differ between the simulators, so we compare distributions, per controller and per
 // group (a mission and an architecture):
 //   - every mean lands within one standard deviation of ARGoS';
-//   - no mean differs from ARGoS' at the 1 % level (Welch's t-test over the 20 seeds);
+//   - no mean differs from ARGoS' at the 1 % level for the group (Welch's t-test over the 20
+//     seeds, Bonferroni over the group's controllers: a group of 15 tested each at 1 % would
+//     reject one faithful controller in seven groups by chance, and the set has 15 groups);
 //   - no systematic bias: the controllers above and below ARGoS' mean are balanced (a sign
-//     test does not reject at 1 %), except where the seed's start sets every score alike
-//     (kSeedBoundGroups, with the evidence);
+//     test does not reject at 1 %);
 //   - the first set's five controllers rank exactly as in ARGoS. Elsewhere many controllers
 //     score alike within seed noise (on tutti-foraging six score 0 in both simulators), so
 //     Spearman's rho is printed, not tested: tuning to it would tune to seed noise.
-// Where ARGoS' own start placement of all 20 seeds is known (tests/data/argos-starts/, today
-// tutti-aggregation's), each seed runs from it: ARGoS' 20 placements are one sample its
-// controllers share, and on tutti-aggregation that sample alone made T10 and T14 miss the gate
-// (README, "Fidelity to ARGoS"). Each group prints its figures (the README's table comes from them).
+// Every seed runs from ARGoS' own start placement where it is known (tests/data/argos-starts/,
+// set 7: every group but tutti-stop and tutti-foraging), the seed then drawing only noise:
+// ARGoS' 20 placements are one sample its controllers share, so a group compared on other
+// placements can lean by that sample's luck alone (on tutti-aggregation it made T10 and T14 miss
+// the gate; README, "Fidelity to ARGoS"). No group is exempt from any gate. Each group prints
+// its figures (the README's table comes from them).
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <iterator>
 #include <cmath>
 #include <cstdio>
 #include <numeric>
@@ -47,44 +49,42 @@ void PrintTo(const ArgosReferenceGroup& group, std::ostream* out) { *out << grou
 
 namespace {
 
-// Groups where the sign test over seeds 1-20 says nothing about a lean: every controller's
-// score is set mostly by where the seed starts the robots, so the controllers move together
-// from one block of 20 seeds to the next and are not the independent trials the test assumes.
-// Their lean is measured over 200 seeds instead (bench/calibration_wide); the per-controller
-// gates still hold.
-constexpr const char* kSeedBoundGroups[] = {
-    // Coconut aggregation: robots outside the central spot, mostly where they start (ratios
-    // 0.99-1.01). Per block of 20 seeds, controllers above/below ARGoS: 13/2 (seeds 1-20),
-    // 6/9, 9/6, 7/8, 4/11, 6/9, 12/3, 12/3, 6/9, 9/6; over seeds 1-200, 9/6, Stouffer z +0.35.
-    "coconut_aggregation",
-};
-
-bool seed_bound(const std::string& group) {
-  return std::find(std::begin(kSeedBoundGroups), std::end(kSeedBoundGroups), group) != std::end(kSeedBoundGroups);
-}
-
 using statistics::mean;
 using statistics::sample_standard_deviation;
 
 const std::string kData = std::string(SWARMDESIGN_SOURCE_DIR) + "/tests/data";
 
+/// Noise seeds per ARGoS start. ARGoS ran each start once; here each start's score is the mean
+/// of this many runs from it, so that our side's noise (some controllers have heavy tails: F2
+/// on SCA scores 3 228 once in 20 runs from start 1, where its mean there is 231) does not
+/// decide the gate, and the comparison is between E[score | ARGoS' start] and ARGoS' draws.
+constexpr int kNoiseSeeds = 5;
+
+/// The level at which a group's controllers may differ from ARGoS', all together (Bonferroni).
+constexpr double kFamilyAlpha = 0.01;
+
 /// Every controller's scores over ARGoS' seeds 1-20. Where ARGoS' own start placement of every
-/// seed is known (tests/data/argos-starts/), seed s runs from it, the seed drawing only noise:
-/// ARGoS' 20 placements are one sample, and a group whose controllers all share it can lean
-/// by that sample's luck alone (README, "Fidelity to ARGoS"). Elsewhere seed s draws its own.
+/// seed is known (tests/data/argos-starts/), seed s's score is the mean of kNoiseSeeds runs
+/// from it, the seeds drawing only noise: ARGoS' 20 placements are one sample, and a group whose
+/// controllers all share it can lean by that sample's luck alone (README, "Fidelity to ARGoS").
+/// Elsewhere seed s draws its own start.
 std::vector<std::vector<double>> our_scores(const ArgosReferenceGroup& group, const std::vector<ArgosReferenceController>& refs,
                                             const std::vector<ControlSoftware>& software) {
   const std::vector<ArgosStart> starts = argos_starts(kData, group, 20);
   ThreadedEvaluator evaluator(0);
   std::vector<std::vector<double>> scores(refs.size());
   if (starts.size() == 20) {
-    std::printf("calibration %-18s from ARGoS' own start placements\n", group.name);
+    std::printf("calibration %-18s from ARGoS' own start placements, %d noise seeds each\n", group.name, kNoiseSeeds);
     for (const ArgosStart& start : starts) {
       std::vector<EvaluationTask> tasks;
-      for (const ControlSoftware& s : software) tasks.push_back({&s, static_cast<std::uint64_t>(start.seed)});
-      std::vector<double> per_controller(tasks.size());
-      evaluator.evaluate(start.mission, tasks, per_controller);
-      for (std::size_t c = 0; c < refs.size(); ++c) scores[c].push_back(per_controller[c]);
+      for (const ControlSoftware& s : software)
+        for (int noise = 1; noise <= kNoiseSeeds; ++noise) tasks.push_back({&s, static_cast<std::uint64_t>(noise)});
+      std::vector<double> runs(tasks.size());
+      evaluator.evaluate(start.mission, tasks, runs);
+      for (std::size_t c = 0; c < refs.size(); ++c) {
+        const auto first = runs.begin() + static_cast<std::ptrdiff_t>(c * kNoiseSeeds);
+        scores[c].push_back(mean(std::vector<double>(first, first + kNoiseSeeds)));
+      }
     }
     return scores;
   }
@@ -120,19 +120,23 @@ TEST_P(Calibration, ScoresLikeArgos) {
     const std::vector<double>& scores = all_scores[c];
     const double ours = mean(scores), theirs = mean(ref.scores), spread = sample_standard_deviation(ref.scores);
     const double p = statistics::welch_t_test(scores, ref.scores).p_value;
-    EXPECT_LE(std::abs(ours - theirs), spread) << name << ": ours " << ours << ", ARGoS " << theirs << " +- " << spread;
-    EXPECT_GE(p, 0.01) << name << ": Welch's t-test rejects (ours " << ours << " +- " << sample_standard_deviation(scores) << ", ARGoS "
+    // Where ARGoS' 20 runs all scored alike (M7 delivers nothing on foraging in any), their sd of
+    // 0 gives no scale: the two samples pooled give it, so that one delivery in our 100 runs is
+    // not a miss.
+    std::vector<double> both = scores;
+    both.insert(both.end(), ref.scores.begin(), ref.scores.end());
+    const double scale = spread > 0 ? spread : sample_standard_deviation(both);
+    EXPECT_LE(std::abs(ours - theirs), scale) << name << ": ours " << ours << ", ARGoS " << theirs << " +- " << spread;
+    EXPECT_GE(p, kFamilyAlpha / static_cast<double>(refs.size())) << name << ": Welch's t-test rejects (ours " << ours << " +- " << sample_standard_deviation(scores) << ", ARGoS "
                        << theirs << " +- " << spread << ")";
-    if (spread > 0) largest_deviation = std::max(largest_deviation, std::abs(ours - theirs) / spread);
+    if (scale > 0) largest_deviation = std::max(largest_deviation, std::abs(ours - theirs) / scale);
     smallest_p = std::min(smallest_p, p);
     agreement.add(ours, theirs);
     names.push_back(name);
   }
   const int above = agreement.above, below = agreement.below;
   const double sign_p = statistics::sign_test_p_value(above, above + below);
-  if (!seed_bound(group.name)) {
-    EXPECT_GE(sign_p, 0.01) << above << " controllers above ARGoS' mean, " << below << " below";
-  }
+  EXPECT_GE(sign_p, 0.01) << above << " controllers above ARGoS' mean, " << below << " below";
   const std::vector<double>& our_means = agreement.ours;
   const std::vector<double>& argos_means = agreement.argos;
   const double rho = statistics::spearman_rho(our_means, argos_means);
