@@ -11,7 +11,8 @@
 namespace sd::web {
 
 /// The mission files the user's projects name that the rule lets them use (absolute paths, as
-/// stored; a project set up from the CLI with a file elsewhere is not listed).
+/// stored; a project set up from the CLI with a file elsewhere is not listed), and those
+/// uploaded into their projects.
 std::vector<std::string> project_mission_files(app::Home& home, const storage::User& user);
 /// The mission: InvalidRequest for an unknown name or a malformed file, NotFound (the same
 /// words whether the file exists or not) for a file outside the user's projects.

@@ -1,7 +1,9 @@
-// The missions a user can run: described and drawn.
+// The missions a user can run: described and drawn; a project's own mission files, uploaded.
 #include "app/documents.hpp"
+#include "app/project_missions.hpp"
 #include "missions/catalogue.hpp"
 #include "missions/svg.hpp"
+#include "web/http_io.hpp"
 #include "web/mission_access.hpp"
 #include "web/routes.hpp"
 
@@ -21,6 +23,24 @@ void add_mission_routes(Routes& routes) {
       }
     }
     return list;
+  });
+
+  // A project's own mission files: uploaded or written in the page's mission editor.
+  const std::string project = std::string("/api/projects/") + kNamePattern;
+  routes.get(project + "/missions", [](Call& call) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const app::ProjectMission& m : app::list_project_missions(call.home, call.user, call.match(1)))
+      list.push_back({{"name", m.name}, {"file", m.file.string()}});
+    return list;
+  });
+
+  routes.post(project + "/missions", [](Call& call) {
+    const app::ProjectMission saved = app::save_project_mission(call.home, call.user, call.match(1),
+                                                                text_field(call.body, "name"), text_field(call.body, "text"));
+    nlohmann::json doc = app::mission_document(load_user_mission(call.home, call.user, saved.file.string()));
+    doc["name"] = saved.file.string();  // what POST /api/projects and /api/runs take
+    doc["file_name"] = saved.name;
+    return doc;
   });
 
   routes.get_raw("/api/missions/svg", [](Call& call) {

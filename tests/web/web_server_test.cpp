@@ -17,6 +17,8 @@
 #include <chrono>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <regex>
 #include <thread>
@@ -26,6 +28,7 @@
 #include "app/evaluation_job.hpp"
 #include "app/experiment_job.hpp"
 #include "control/config_string.hpp"
+#include "core/bounded_file.hpp"
 #include "evaluation/simulation.hpp"
 #include "missions/catalogue.hpp"
 #include "storage/designs.hpp"
@@ -169,6 +172,82 @@ TEST_F(WebServer, ASecondUserCanNeitherListNorWatchNorStopTheFirstUsersWork) {
   bool listed = false;
   for (const json& m : alice_->get("/api/missions").body) listed = listed || m.at("name") == file;
   EXPECT_TRUE(listed);
+}
+
+/// The catalogue's AAC as a user's own mission document named `name`, shortened to 10 s.
+json own_mission(const std::string& name) {
+  json doc = json::parse(load_mission("aac").document, nullptr, true, /*ignore_comments=*/true);
+  doc["name"] = name;
+  doc["duration"] = 10;
+  doc.erase("argos");
+  return doc;
+}
+
+TEST_F(WebServer, AMissionUploadedIntoAProjectIsStoredPrivatelyListedAndRunnableByItsOwnerOnly) {
+  alice_project("mine");
+  const std::string text = own_mission("corner").dump(1);
+  const Answer up = alice_->post("/api/projects/mine/missions", {{"name", "corner"}, {"text", text}});
+  ASSERT_EQ(up.status, 200) << up.text;
+  const std::string file = up.body.at("name");
+  EXPECT_EQ(up.body.at("robots"), 20);
+  // Stored as sent, in the project's folder, readable by its owner only.
+  const auto stored = root_ / "home" / "users" / "alice" / "projects" / "mine" / "missions" / "corner.json";
+  EXPECT_TRUE(std::filesystem::equivalent(file, stored));
+  std::ifstream in(stored);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), text);
+  EXPECT_EQ(std::filesystem::status(stored).permissions() & std::filesystem::perms::all,
+            std::filesystem::perms::owner_read | std::filesystem::perms::owner_write);
+
+  const Answer listed = alice_->get("/api/projects/mine/missions");
+  ASSERT_EQ(listed.body.size(), 1u);
+  EXPECT_EQ(listed.body.at(0).at("name"), "corner");
+  bool offered = false;
+  for (const json& m : alice_->get("/api/missions").body) offered = offered || m.at("name") == file;
+  EXPECT_TRUE(offered);
+  EXPECT_EQ(alice_->get("/api/missions/svg?name=" + file).status, 200);
+  start_run(*alice_, kFsm, file, 2);
+  // A new project designs on it.
+  EXPECT_EQ(alice_->post("/api/projects", {{"name", "own"}, {"mission", file}, {"budget", "300"}}).status, 200);
+
+  // Bob neither sees, reads, runs nor writes any of it.
+  EXPECT_EQ(bob_->get("/api/projects/mine/missions").status, 404);
+  EXPECT_EQ(bob_->post("/api/projects/mine/missions", {{"name", "corner"}, {"text", own_mission("x").dump()}}).status, 404);
+  EXPECT_EQ(bob_->get("/api/missions/svg?name=" + file).status, 404);
+  EXPECT_EQ(bob_->post("/api/runs", {{"text", kFsm}, {"mission", file}, {"seed", 1}}).status, 404);
+  for (const json& m : bob_->get("/api/missions").body) EXPECT_NE(m.at("name"), file);
+  std::ifstream again(stored);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(again), {}), text);
+}
+
+TEST_F(WebServer, ABadMissionUploadGetsOneLineNamingTheProblemAndStoresNothing) {
+  alice_project("mine");
+  json blocked = own_mission("blocked");  // a wall over nearly all of the start disc
+  blocked["arena"]["walls"].push_back({{"box", {{"center", {0, 0}}, {"size", {2.4, 2.4}}}}});
+  json bad_field = own_mission("bad");
+  bad_field["robots"] = 0;
+  const std::vector<std::pair<json, std::string>> cases{
+      {{{"name", "broken"}, {"text", "{\"name\": \"broken\","}}, "not valid JSON"},
+      {{{"name", "bad"}, {"text", bad_field.dump()}}, "robots"},
+      {{{"name", "blocked"}, {"text", blocked.dump()}}, "cannot place robot"},
+      {{{"name", "../escape"}, {"text", own_mission("x").dump()}}, "mission name"},
+      {{{"name", ".hidden"}, {"text", own_mission("x").dump()}}, "mission name"},
+  };
+  for (const auto& [body, words] : cases) {
+    const Answer a = alice_->post("/api/projects/mine/missions", body);
+    EXPECT_EQ(a.status, 400) << body.at("name");
+    const std::string error = a.body.is_object() ? a.body.value("error", "") : "";
+    EXPECT_NE(error.find(words), std::string::npos) << error;
+    EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+  }
+  // A file over 1 MiB cannot even be sent: the request is refused before it is read.
+  const Answer huge =
+      alice_->post("/api/projects/mine/missions", {{"name", "huge"}, {"text", std::string(kMaxInputFileBytes, ' ')}});
+  EXPECT_EQ(huge.status, 413);
+  ASSERT_TRUE(huge.body.is_object()) << huge.text;
+  EXPECT_NE(huge.body.value("error", "").find("1 MiB"), std::string::npos) << huge.text;
+  const auto folder = root_ / "home" / "users" / "alice" / "projects" / "mine" / "missions";
+  EXPECT_TRUE(!std::filesystem::exists(folder) || std::filesystem::is_empty(folder));
+  EXPECT_TRUE(alice_->get("/api/projects/mine/missions").body.empty());
 }
 
 TEST_F(WebServer, AnExperimentsReportIsServedToItsOwnerOnlyAsOneSelfContainedPage) {
