@@ -3,6 +3,7 @@
 import { api } from './api.js';
 import { download, framePng, frameSvg, recordVideo } from './exec_export.js';
 import { createGraph, renderModel, setCounts } from './graph.js';
+import { shortName } from './missions.js';
 import { linePlot } from './plot.js';
 import { el } from './properties.js';
 import { openRun } from './run_stream.js';
@@ -265,7 +266,7 @@ export function initExec() {
     setMissions(missions) {
       const select = $('exec-mission');
       const keep = select.value;
-      select.replaceChildren(...missions.map((m) => el('option', { value: m.name, text: `${m.name} — ${m.title}` })));
+      select.replaceChildren(...missions.map((m) => el('option', { value: m.name, text: `${shortName(m)} — ${m.title}`, title: m.name })));
       if (missions.some((m) => m.name === keep)) select.value = keep;
     },
     shown() { graph.resize(); graph.fit(undefined, 15); dirty = true; },

@@ -4,7 +4,7 @@ import { api, setCsrf, whenUnauthorized } from './api.js';
 import { loadCatalogue } from './catalogue.js';
 import { DEFAULT_TEXT, initEditor } from './editor.js';
 import { initExec } from './exec.js';
-import { renderMissions } from './missions.js';
+import { initMissionUpload, renderMissions } from './missions.js';
 import { initMonitor } from './monitor.js';
 import { copyFullScores } from './numbers.js';
 import { showSignIn } from './signin.js';
@@ -23,6 +23,7 @@ function showTab(name) {
   if (name === 'editor') { parts.editor.resize(); parts.editor.refreshProjects(); }
   if (name === 'exec') parts.exec.shown();
   if (name === 'designs') parts.monitor.shown(); else parts.monitor.hidden();
+  if (name === 'missions') parts.upload.refreshProjects();
 }
 
 async function startApp(user) {
@@ -39,15 +40,19 @@ async function startApp(user) {
     onWatch: (text, mission) => { showTab('exec'); exec.prepare({ text, mission, seed: 1, go: true }); },
     onEdit: (text) => { showTab('editor'); editor.load(text); },
   });
+  const showMissions = (list) => {
+    missions = list;
+    exec.setMissions(missions);
+    monitor.setMissions(missions);
+    renderMissions($('mission-grid'), missions, (name) => { exec.prepare({ mission: name, text: $('exec-text').value || editor.current.text }); showTab('exec'); });
+  };
+  const upload = initMissionUpload({ onUploaded: async () => showMissions(await api('/api/missions')) });
   copyFullScores();
-  parts = { editor, exec, monitor };
+  parts = { editor, exec, monitor, upload };
   window.__sd = parts; // for the end-to-end tests and the curious
   window.__sd.execCounts = () => exec.graph.nodes().reduce((sum, n) => sum + (n.data('count') || 0), 0);
   for (const tab of document.querySelectorAll('.tab')) tab.addEventListener('click', () => showTab(tab.dataset.tab));
-  missions = await api('/api/missions');
-  exec.setMissions(missions);
-  monitor.setMissions(missions);
-  renderMissions($('mission-grid'), missions, (name) => { exec.prepare({ mission: name, text: $('exec-text').value || editor.current.text }); showTab('exec'); });
+  showMissions(await api('/api/missions'));
   exec.prepare({ text: DEFAULT_TEXT, mission: 'aac', seed: 1 });
   const wanted = (location.hash || '#editor').slice(1);
   showTab(['editor', 'exec', 'designs', 'missions'].includes(wanted) ? wanted : 'editor');

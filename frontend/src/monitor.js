@@ -5,6 +5,7 @@ import { api } from './api.js';
 import { getCatalogue } from './catalogue.js';
 import { initDesignForm } from './design_form.js';
 import { createGraph, renderModel } from './graph.js';
+import { shortName } from './missions.js';
 import { scoreSpan } from './numbers.js';
 import { linePlot } from './plot.js';
 import { el } from './properties.js';
@@ -237,7 +238,7 @@ export function initMonitor({ onWatch, onEdit, missions }) {
 
   return {
     setMissions(list) {
-      $('project-mission').replaceChildren(...list.map((m) => el('option', { value: m.name, text: `${m.name} — ${m.title}` })));
+      $('project-mission').replaceChildren(...list.map((m) => el('option', { value: m.name, text: `${shortName(m)} — ${m.title}`, title: m.name })));
     },
     shown() { visible = true; refreshProjects().catch(() => {}); graph.resize(); },
     hidden() { visible = false; },
