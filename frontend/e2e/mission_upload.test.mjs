@@ -1,6 +1,7 @@
 // A user's own mission, brought in from the page: uploaded into a project from the Missions
 // tab, in headless chromium against the real server. Bad files get the server's one line and
-// nothing is stored; a good one is drawn, offered to new projects and to Exec, and runs. A
+// nothing is stored; a good one is drawn, offered to new projects and to Exec, runs, and a
+// project on it designs to the end (shown as finished, budget spent, not as an error). A
 // second account sees none of it and cannot read, draw, run or overwrite it.
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
@@ -119,6 +120,23 @@ test('a good mission is drawn, offered to new projects and Exec, and runs', { ti
   assert.equal(Number(await page.textContent('#final-score')), expected);
   await shot(page, 'ran-in-exec');
   assert.deepEqual(errors, []);
+});
+
+test('a project on the uploaded mission designs to its end: finished, budget spent', { timeout: 180000 }, async () => {
+  const file = await page.locator('.mission-card', { hasText: 'Corner of corner' }).locator('.name').getAttribute('title');
+  await page.click('#tab-designs');
+  await page.fill('#project-name', 'own');
+  await page.selectOption('#project-mission', file);
+  await page.fill('#project-budget', '1400');
+  await page.click('#project-create');
+  await page.waitForFunction(() => document.getElementById('monitor-project').textContent === 'own');
+  await page.click('#design-start');
+  await page.waitForFunction(() => /^finished/.test(document.getElementById('design-state').textContent), null, { timeout: 160000, polling: 500 });
+  // Iterated F-Race's normal end reads as one, its reason on hover.
+  assert.equal(await page.textContent('#design-state'), 'finished: budget spent');
+  assert.match(await page.getAttribute('#design-state', 'title'), /^finished because: Not enough budget/);
+  assert.match(await page.textContent('#alive'), /^\d+( racing of \d+)?$/);
+  await shot(page, 'designed-to-the-end');
 });
 
 test('another account sees, reads, runs and overwrites none of it', { timeout: 30000 }, async () => {

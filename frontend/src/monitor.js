@@ -36,7 +36,7 @@ export function initMonitor({ onWatch, onEdit, missions }) {
     list.replaceChildren(...projects.map((p) => el('li', {
       class: p.name === selected ? 'selected' : '', testid: `project-${p.name}`,
       onclick: () => select(p.name),
-    }, el('span', { text: p.name }), el('span', { class: 'muted small', text: `${p.mission || 'no mission'} · ${p.budget ?? '–'}` }))));
+    }, el('span', { text: p.name }), el('span', { class: 'muted small', text: `${p.mission ? shortName({ name: p.mission }) : 'no mission'} · ${p.budget ?? '–'}`, title: p.mission || '' }))));
     if (!projects.length) list.append(el('li', { class: 'muted small', text: 'no project yet' }));
     if (!selected && projects.length) select(projects[0].name);
     return projects;
@@ -56,7 +56,8 @@ export function initMonitor({ onWatch, onEdit, missions }) {
   }
 
   /// What a design was started with, as `status` prints it.
-  const startedWith = (d) => `${d.architectures} · ${d.flavours} · seed ${d.seed} · budget ${d.budget} · ${d.mission}`;
+  // A mission file is shown as project/file (the whole path is the design's title, on hover).
+  const startedWith = (d) => `${d.architectures} · ${d.flavours} · seed ${d.seed} · budget ${d.budget} · ${shortName({ name: d.mission || '' })}`;
 
   /// The list reads its rows from /designs; the newest row's state is the status box's (both come
   /// from the same storage reading, and the list is fetched again whenever they would differ).
@@ -66,7 +67,7 @@ export function initMonitor({ onWatch, onEdit, missions }) {
     listed = rows.length ? { id: rows[0].id, state: rows[0].state } : null;
     $('design-list').replaceChildren(...rows.map((d) => el('li', { testid: `design-${d.id}`, class: 'design-row', title: d.folder },
       el('span', { class: 'design-head', text: `#${d.id} ${d.state}` }),
-      el('span', { class: 'muted', text: startedWith(d) }),
+      el('span', { class: 'muted', text: startedWith(d), title: d.mission || '' }),
       d.best_score !== null && d.best_score !== undefined ? scoreSpan(el, d.best_score, { class: 'muted' }) : '')));
     if (!rows.length) $('design-list').append(el('li', { class: 'muted small', text: 'no design yet' }));
   }
@@ -111,16 +112,24 @@ export function initMonitor({ onWatch, onEdit, missions }) {
     $('iteration').textContent = progress.total_iterations ? `${progress.iteration} / ${progress.total_iterations}` : String(progress.iteration ?? '–');
     const race = lastRace(s);
     const alive = race ? race.configurations.filter((c) => c.eliminated_after === null || c.eliminated_after === undefined).length : progress.race_configurations;
-    $('alive').textContent = alive === undefined ? '–' : String(alive);
+    // As `swarmdesign status` counts them: the configurations of the current race, and how
+    // many of those are still racing.
+    const inRace = race ? race.configurations.length : progress.race_configurations;
+    $('alive').textContent = alive === undefined ? '–' : (inRace !== undefined && inRace !== alive ? `${alive} racing of ${inRace}` : String(alive));
     // A cluster project's design runs as a Slurm job: its state, and the last problem in one line.
     const job = s.cluster_job;
     const slurm = job ? ` · Slurm job ${job.job_id ?? '(not submitted)'}${job.slurm_state ? ` ${job.slurm_state}` : ''}${job.note ? ` · ${job.note}` : ''}` : '';
-    $('design-state').textContent = `${design.state}${s.running_here ? ' (here)' : ''}${slurm}${progress.finish_reason ? ` · ${progress.finish_reason}` : ''}`;
+    // Iterated F-Race ends when its budget cannot pay another race: the normal end, not an error.
+    const spent = design.state === 'finished' && /^not enough budget/i.test(progress.finish_reason || '');
+    const reason = spent ? '' : progress.finish_reason ? ` · ${progress.finish_reason}` : '';
+    $('design-state').textContent = `${spent ? 'finished: budget spent' : design.state}${s.running_here ? ' (here)' : ''}${slurm}${reason}`;
+    $('design-state').title = progress.finish_reason ? `finished because: ${progress.finish_reason}` : '';
     $('design-start').disabled = design.state === 'running';
     $('design-stop').disabled = design.state !== 'running';
     showResumable(design);
 
     $('design-info').textContent = `Design #${design.id}: ${startedWith(design)}`;
+    $('design-info').title = design.mission || '';
     renderElites(progress.elites || []);
     // Convergence: the best elite's mean over all its runs at the end of each iteration.
     const points = s.convergence || [];
