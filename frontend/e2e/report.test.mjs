@@ -2,9 +2,9 @@
 // two conditions, three designs each) while run-exp serves the same home, and writes its
 // report; the page opens from file:// in headless chromium and must draw every plot, table and
 // design the data calls for. The Designs tab lists the experiment and links the same page,
-// which the server serves under its own content security policy.
+// which the server serves under its own content security policy, with the data files it links.
 import assert from 'node:assert/strict';
-import { readFileSync, writeFileSync } from 'node:fs';
+import { existsSync, readFileSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
 import { fileURLToPath } from 'node:url';
@@ -74,6 +74,10 @@ test('the report of a real experiment opens offline and in the web app', { timeo
     const r = await checkReport(offline, path.join(out, 'report.html'), path.join(SCREENSHOTS, 'report.png'));
     assertComplete(r);
     assert.deepEqual(r.requests.filter((url) => !/^(file|data|blob):/.test(url)), [], 'the file asks nothing of the network');
+    // Its data links name the files written next to it.
+    const linked = await offline.$$eval('a[data-file]', (as) => as.map((a) => a.getAttribute('href')));
+    assert.equal(linked.length, 10);
+    for (const name of linked) assert.ok(existsSync(path.join(out, name)), name);
   } finally {
     await offline.close();
   }
@@ -95,6 +99,12 @@ test('the report of a real experiment opens offline and in the web app', { timeo
     const r = await checkReport(served, new URL(href, server.url).href, path.join(SCREENSHOTS, 'report-in-app.png'));
     assertComplete(r);  // the server's policy lets the inline page run and load nothing
     assert.deepEqual(r.requests.filter((url) => !url.startsWith(new URL(href, server.url).href) && !/^(data|blob):/.test(url)), []);
+    // The data files the page links download from the server, equal to those the CLI wrote.
+    assert.equal(await served.locator('a[data-file]').count(), 10);
+    for (const name of ['boxes.csv', 'designs.csv', 'wilcoxon.csv']) {
+      const [download] = await Promise.all([served.waitForEvent('download'), served.click(`a[data-file="${name}"]`)]);
+      assert.equal(readFileSync(await download.path(), 'utf8'), readFileSync(path.join(out, name), 'utf8'), name);
+    }
     await served.close();
   } finally {
     await context.close();

@@ -290,15 +290,15 @@ std::string csv_cell(const json& v) {
   return v.dump();
 }
 
-void write_csv(const std::filesystem::path& file, const std::vector<std::string>& columns, const json& rows) {
-  std::ofstream out(file);
+std::string csv_text(const std::vector<std::string>& columns, const json& rows) {
+  std::ostringstream out;
   for (std::size_t i = 0; i < columns.size(); ++i) out << (i ? "," : "") << columns[i];
   out << "\n";
   for (const auto& row : rows) {
     for (std::size_t i = 0; i < columns.size(); ++i) out << (i ? "," : "") << csv_cell(row.value(columns[i], json(nullptr)));
     out << "\n";
   }
-  if (!out) throw std::runtime_error("cannot write " + file.string());
+  return out.str();
 }
 
 std::string read_file(const std::filesystem::path& file) {
@@ -407,20 +407,12 @@ std::string experiment_report_html(const json& document, const std::filesystem::
          "</script>\n<script>" + script + "</script></body></html>\n";
 }
 
-std::vector<std::filesystem::path> write_experiment_report(const json& document, const std::filesystem::path& folder,
-                                                           const std::filesystem::path& web_root) {
-  const std::string html = experiment_report_html(document, web_root);  // first: a missing bundle writes nothing
-  std::filesystem::create_directories(folder);
-  std::vector<std::filesystem::path> files;
-  auto file = [&](const std::string& name) { return files.emplace_back(folder / name); };
-  {
-    std::ofstream out(file("report.html"), std::ios::binary);
-    out << html;
-  }
-  {
-    std::ofstream out(file("report.json"));
-    out << document.dump(1) << "\n";
-  }
+std::vector<ReportFile> experiment_report_data_files(const json& document) {
+  std::vector<ReportFile> files;
+  files.push_back({"report.json", document.dump(1) + "\n"});
+  auto csv = [&](const std::string& name, const std::vector<std::string>& columns, const json& rows) {
+    files.push_back({name, csv_text(columns, rows)});
+  };
   json designs = json::array(), assessments = json::array(), convergence = json::array();
   for (const auto& d : document["designs"]) {
     json row = d;
@@ -438,17 +430,17 @@ std::vector<std::filesystem::path> write_experiment_report(const json& document,
       convergence.push_back({{"design", d["id"]}, {"mission", d["mission"]}, {"condition", d["condition"]},
                              {"replicate", d["replicate"]}, {"runs_used", point[0]}, {"best_score", point[1]}});
   }
-  write_csv(file("designs.csv"),
-            {"id", "mission", "condition", "replicate", "seed", "budget", "runs_used", "wall_seconds", "architecture",
-             "design_score", "score", "behaviours", "conditions", "configuration"},
-            designs);
-  write_csv(file("assessments.csv"), {"design", "mission", "condition", "replicate", "seed", "score"}, assessments);
-  write_csv(file("convergence.csv"), {"design", "mission", "condition", "replicate", "runs_used", "best_score"}, convergence);
-  write_csv(file("boxes.csv"),
-            {"mission", "condition", "n", "min", "q1", "median", "q3", "max", "whisker_low", "whisker_high", "notch_low",
-             "notch_high"},
-            document["boxes"]);
-  write_csv(file("wilcoxon.csv"), {"mission", "a", "b", "n_a", "n_b", "W", "p_value", "exact", "better"}, document["wilcoxon"]);
+  csv("designs.csv",
+      {"id", "mission", "condition", "replicate", "seed", "budget", "runs_used", "wall_seconds", "architecture",
+       "design_score", "score", "behaviours", "conditions", "configuration"},
+      designs);
+  csv("assessments.csv", {"design", "mission", "condition", "replicate", "seed", "score"}, assessments);
+  csv("convergence.csv", {"design", "mission", "condition", "replicate", "runs_used", "best_score"}, convergence);
+  csv("boxes.csv",
+      {"mission", "condition", "n", "min", "q1", "median", "q3", "max", "whisker_low", "whisker_high", "notch_low",
+       "notch_high"},
+      document["boxes"]);
+  csv("wilcoxon.csv", {"mission", "a", "b", "n_a", "n_b", "W", "p_value", "exact", "better"}, document["wilcoxon"]);
   json friedman = json::array();
   if (!document["friedman"].is_null()) {
     const json& f = document["friedman"];
@@ -457,13 +449,27 @@ std::vector<std::filesystem::path> write_experiment_report(const json& document,
                           {"df", f["df"]}, {"p_value", f["p_value"]}, {"critical_difference", f["critical_difference"]},
                           {"blocks", f["blocks"].size()}});
   }
-  write_csv(file("friedman.csv"), {"condition", "mean_rank", "statistic", "df", "p_value", "critical_difference", "blocks"},
-            friedman);
-  write_csv(file("module_frequency.csv"),
-            {"condition", "mission", "kind", "flavour", "module", "name", "designs_with", "designs", "fraction"},
-            document["module_frequency"]);
-  write_csv(file("architectures.csv"), {"mission", "condition", "fsm", "bt", "nn"}, document["architectures"]);
-  write_csv(file("wall_time.csv"), {"mission", "condition", "designs", "runs", "wall_seconds"}, document["wall_time"]);
+  csv("friedman.csv", {"condition", "mean_rank", "statistic", "df", "p_value", "critical_difference", "blocks"}, friedman);
+  csv("module_frequency.csv",
+      {"condition", "mission", "kind", "flavour", "module", "name", "designs_with", "designs", "fraction"},
+      document["module_frequency"]);
+  csv("architectures.csv", {"mission", "condition", "fsm", "bt", "nn"}, document["architectures"]);
+  csv("wall_time.csv", {"mission", "condition", "designs", "runs", "wall_seconds"}, document["wall_time"]);
+  return files;
+}
+
+std::vector<std::filesystem::path> write_experiment_report(const json& document, const std::filesystem::path& folder,
+                                                           const std::filesystem::path& web_root) {
+  const std::string html = experiment_report_html(document, web_root);  // first: a missing bundle writes nothing
+  std::filesystem::create_directories(folder);
+  std::vector<std::filesystem::path> files;
+  const auto write = [&](const std::string& name, const std::string& content) {
+    std::ofstream out(files.emplace_back(folder / name), std::ios::binary);
+    out << content;
+    if (!out) throw std::runtime_error("cannot write " + (folder / name).string());
+  };
+  write("report.html", html);
+  for (const ReportFile& f : experiment_report_data_files(document)) write(f.name, f.content);
   return files;
 }
 

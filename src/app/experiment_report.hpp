@@ -24,6 +24,15 @@ nlohmann::json experiment_report_document(Home& home, const storage::User& user,
 /// front end's build). Failed when the bundle is missing.
 std::string experiment_report_html(const nlohmann::json& document, const std::filesystem::path& web_root);
 
+/// One file of the report's data: report.json or a table's CSV.
+struct ReportFile {
+  std::string name, content;
+};
+
+/// report.json and one CSV per table, as the report folder holds them (what the page points
+/// to, served as they are over the web).
+std::vector<ReportFile> experiment_report_data_files(const nlohmann::json& document);
+
 /// Writes report.html, report.json and one CSV per table into `folder`; returns the files.
 std::vector<std::filesystem::path> write_experiment_report(const nlohmann::json& document,
                                                            const std::filesystem::path& folder,

@@ -27,6 +27,7 @@
 #include "app/accounts.hpp"
 #include "app/evaluation_job.hpp"
 #include "app/experiment_job.hpp"
+#include "app/experiment_report.hpp"
 #include "control/config_string.hpp"
 #include "core/bounded_file.hpp"
 #include "evaluation/simulation.hpp"
@@ -286,6 +287,31 @@ TEST_F(WebServer, AnExperimentsReportIsServedToItsOwnerOnlyAsOneSelfContainedPag
   ASSERT_EQ(policies.size(), 1u) << "two policies would both apply";
   EXPECT_NE(policies[0].find("default-src 'none'"), std::string::npos) << policies[0];
   EXPECT_NE(policies[0].find("script-src 'unsafe-inline'"), std::string::npos) << policies[0];
+
+  // The data files the page points to, relative to its address: byte for byte what
+  // `swarmdesign report` writes next to report.html.
+  std::vector<std::filesystem::path> written;
+  {
+    app::Home home(root_ / "home");
+    const storage::User owner = app::sign_in_here(home, "alice", "alice-password").user;
+    written = app::write_experiment_report(app::experiment_report_document(home, owner, "tiny", "mine"), root_ / "report",
+                                           std::filesystem::path(SWARMDESIGN_BINARY).parent_path() / "web-root");
+  }
+  int served = 0;
+  for (const auto& file : written) {
+    const std::string name = file.filename().string();
+    if (name == "report.html") continue;
+    const Answer data = alice.get("/api/projects/mine/experiments/tiny/" + name);
+    ASSERT_EQ(data.status, 200) << name;
+    std::ifstream in(file, std::ios::binary);
+    EXPECT_EQ(data.text, std::string(std::istreambuf_iterator<char>(in), {})) << name;
+    EXPECT_EQ(bob.get("/api/projects/mine/experiments/tiny/" + name).status, 404) << name;
+    ++served;
+  }
+  EXPECT_EQ(served, 10);  // report.json and nine tables
+  EXPECT_EQ(alice.get("/api/projects/mine/experiments/tiny/secrets.csv").status, 404);
+  EXPECT_EQ(alice.get("/api/projects/mine/experiments/tiny/..%2F..%2Fswarmdesign.db").status, 404);
+  EXPECT_EQ(WebClient(with_pages.port()).get("/api/projects/mine/experiments/tiny/boxes.csv").status, 401);
 
   EXPECT_EQ(alice.get("/api/projects/mine/experiments/other/report").status, 404);
   EXPECT_EQ(bob.get("/api/projects/mine/experiments").status, 404);
