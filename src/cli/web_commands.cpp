@@ -22,6 +22,7 @@ struct WebOptions {
   int port = 8080;
   std::string web_root = SWARMDESIGN_WEB_ROOT;
   std::vector<std::string> allowed_hosts;
+  bool behind_tls = false;
 };
 
 void run_exp(const WebOptions& o) {
@@ -36,11 +37,16 @@ void run_exp(const WebOptions& o) {
   for (const std::string& name : o.allowed_hosts)
     if (name.empty() || name.size() > 253 || name.find_first_of(" /\\@?#") != std::string::npos)
       throw UsageError("--allowed-host '" + name + "' is not a host name (give a name such as lab.example.org)");
-  web::WebServer server({o.host, o.port, o.web_root, swarmdesign_home(), o.allowed_hosts, {}});
+  web::WebServer server({o.host, o.port, o.web_root, swarmdesign_home(), o.allowed_hosts, {}, o.behind_tls});
   const int port = server.bind();
-  if (!web::HostCheck::is_loopback(o.host))
+  if (!web::HostCheck::is_loopback(o.host)) {
     std::cout << "Warning: listening on " << o.host << ", not only on this machine: anyone who can reach it "
               << "may try to sign in.\n";
+    // Plain HTTP carries passwords and session cookies in clear over the network.
+    if (!o.behind_tls)
+      std::cout << "Warning: plain HTTP: serve it through a TLS reverse proxy and pass --behind-tls "
+                << "(README, \"A lab server over HTTPS\").\n";
+  }
   std::cout << "Answers requests for " << server.hosts().describe()
             << " (others: --allowed-host NAME)" << std::endl;
   const std::string shown = o.host.find(':') != std::string::npos ? "[" + o.host + "]" : o.host;
@@ -68,11 +74,15 @@ const CommandRegistrar registrar{60, [](CLI::App& app, Context&) {
   cmd->add_option("--web-root", o->web_root, "folder of the built front end")->capture_default_str();
   cmd->add_option("--allowed-host", o->allowed_hosts,
                   "a host name the server answers besides its address (repeatable), e.g. the lab's name for it");
+  cmd->add_flag("--behind-tls", o->behind_tls,
+                "a TLS reverse proxy (e.g. Caddy or nginx) serves the page over HTTPS: session cookies are marked "
+                "Secure, so a browser never sends them over plain HTTP");
   cmd->footer("Sign in with your SwarmDesign account (swarmdesign sign-up). Every page and API route needs a "
               "session. A request naming another Host is refused (no web page can reach the server by DNS "
               "rebinding); 5 wrong passwords in a row lock a name for a minute, 20 lock the client's address."
               "\n\nExample:\n  swarmdesign run-exp\n  swarmdesign run-exp --port 9000\n"
-              "  swarmdesign run-exp --host 0.0.0.0 --allowed-host lab.example.org");
+              "  swarmdesign run-exp --host 0.0.0.0 --allowed-host lab.example.org\n"
+              "  swarmdesign run-exp --allowed-host lab.example.org --behind-tls   (Caddy on the same machine)");
   cmd->callback([o] { run_exp(*o); });
 }};
 

@@ -4,15 +4,35 @@
 #include "app/accounts.hpp"
 #include "app/errors.hpp"
 #include "storage/sessions.hpp"
+#include "web/host_check.hpp"
 #include "web/http_io.hpp"
 #include "web/routes.hpp"
 
 namespace sd::web {
 
+namespace {
+
+/// The client whose failed sign-ins count. Behind a TLS proxy on this machine every request
+/// comes from the proxy's loopback address, which would lock every user out together: there the
+/// client is the last address of X-Forwarded-For, the one the proxy itself appended. A request
+/// from elsewhere cannot pick its own address that way.
+std::string client_address(const Call& call) {
+  const std::string& direct = call.request.remote_addr;
+  if (!call.context.behind_tls || !HostCheck::is_loopback(direct)) return direct;
+  const std::string forwarded = call.request.get_header_value("X-Forwarded-For");
+  const std::size_t comma = forwarded.rfind(',');
+  std::string last = comma == std::string::npos ? forwarded : forwarded.substr(comma + 1);
+  last.erase(0, last.find_first_not_of(' '));
+  last.erase(last.find_last_not_of(' ') + 1);
+  return last.empty() || last.size() > 64 ? direct : last;
+}
+
+}  // namespace
+
 void add_account_routes(Routes& routes) {
   routes.post_public("/api/sign-in", [](Call& call) {
     const std::string name = text_field(call.body, "name");
-    const std::string& address = call.request.remote_addr;
+    const std::string address = client_address(call);
     // The slot first: a request that waited for it finds a lock-out its predecessors set, and
     // is refused without a check.
     const PasswordSlots::Held slot = call.context.passwords.take();
@@ -28,8 +48,9 @@ void add_account_routes(Routes& routes) {
       throw HttpError(401, "wrong user name or password");
     }
     call.context.addresses.succeeded(address);
-    call.response.set_header("Set-Cookie", SessionGuard::session_cookie(
-                                               token, static_cast<long>(storage::kSessionLifetime.count())));
+    call.response.set_header("Set-Cookie",
+                             SessionGuard::session_cookie(token, static_cast<long>(storage::kSessionLifetime.count()),
+                                                          call.context.behind_tls));
     send_json(call.response, {{"user", name}, {"csrf", call.context.guard.csrf_token(token)}});
   });
 
@@ -39,7 +60,7 @@ void add_account_routes(Routes& routes) {
 
   routes.post("/api/sign-out", [](Call& call) -> nlohmann::json {
     app::close_session(call.home, *SessionGuard::session_token(call.request));
-    call.response.set_header("Set-Cookie", SessionGuard::cleared_cookie());
+    call.response.set_header("Set-Cookie", SessionGuard::cleared_cookie(call.context.behind_tls));
     return nlohmann::json::object();
   });
 }

@@ -21,13 +21,15 @@ namespace sd::web {
 
 /// What the routes share for the server's lifetime.
 struct WebContext {
-  WebContext(std::filesystem::path home_folder, std::filesystem::path web_root_folder, storage::SignInPolicy policy)
-      : home(std::move(home_folder)), web_root(std::move(web_root_folder)), sign_in(policy), addresses(policy),
-        passwords(kPasswordChecksAtOnce), designs("web") {}
+  WebContext(std::filesystem::path home_folder, std::filesystem::path web_root_folder, storage::SignInPolicy policy,
+             bool tls_proxy)
+      : home(std::move(home_folder)), web_root(std::move(web_root_folder)), sign_in(policy), behind_tls(tls_proxy),
+        addresses(policy), passwords(kPasswordChecksAtOnce), designs("web") {}
   static constexpr int kPasswordChecksAtOnce = 4;  // 256 MiB of Argon2id at most
   std::filesystem::path home;
   std::filesystem::path web_root;  // the built front end (the report page's bundle)
   storage::SignInPolicy sign_in;
+  bool behind_tls;                 // session cookies only over HTTPS (a TLS proxy in front)
   SignInLimiter addresses;         // failed sign-ins per client address
   PasswordSlots passwords;         // password checks at once (password_slots.hpp)
   SessionGuard guard;

@@ -61,13 +61,13 @@ std::string SessionGuard::csrf_token(const std::string& session_token) const {
   return hex.data();
 }
 
-std::string SessionGuard::session_cookie(const std::string& token, long max_age_seconds) {
-  return std::string(kSessionCookie) + "=" + token + "; Path=/; HttpOnly; SameSite=Strict; Max-Age=" +
-         std::to_string(max_age_seconds);
+std::string SessionGuard::session_cookie(const std::string& token, long max_age_seconds, bool secure) {
+  return std::string(kSessionCookie) + "=" + token + "; Path=/; HttpOnly; SameSite=Strict" + (secure ? "; Secure" : "") +
+         "; Max-Age=" + std::to_string(max_age_seconds);
 }
 
-std::string SessionGuard::cleared_cookie() {
-  return std::string(kSessionCookie) + "=; Path=/; HttpOnly; SameSite=Strict; Max-Age=0";
+std::string SessionGuard::cleared_cookie(bool secure) {
+  return std::string(kSessionCookie) + "=; Path=/; HttpOnly; SameSite=Strict" + (secure ? "; Secure" : "") + "; Max-Age=0";
 }
 
 }  // namespace sd::web

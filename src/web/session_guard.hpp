@@ -28,8 +28,9 @@ class SessionGuard {
   void require_csrf(const httplib::Request& request) const;
 
   std::string csrf_token(const std::string& session_token) const;
-  static std::string session_cookie(const std::string& token, long max_age_seconds);
-  static std::string cleared_cookie();
+  /// The cookie, `secure` (only ever sent over HTTPS) when a TLS proxy serves the page.
+  static std::string session_cookie(const std::string& token, long max_age_seconds, bool secure);
+  static std::string cleared_cookie(bool secure);
 
  private:
   std::string key_;  // crypto_generichash key, drawn per server start

@@ -24,6 +24,7 @@ struct WebServerOptions {
   std::filesystem::path home;      // the SwarmDesign home (accounts, projects)
   std::vector<std::string> allowed_hosts;  // host names it answers besides its address (host_check.hpp)
   storage::SignInPolicy sign_in;   // lock-outs after failed sign-ins
+  bool behind_tls = false;         // a TLS reverse proxy serves it: session cookies are Secure
 };
 
 /// Most bytes a request body may have (a configuration string is under 2 kB).

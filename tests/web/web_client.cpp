@@ -18,7 +18,7 @@ Answer answer_of(const httplib::Result& result) {
 }  // namespace
 
 RunningServer::RunningServer(const std::filesystem::path& home, const std::filesystem::path& web_root)
-    : RunningServer(web::WebServerOptions{"127.0.0.1", 0, web_root, home, {}, {}}) {}
+    : RunningServer(web::WebServerOptions{"127.0.0.1", 0, web_root, home, {}, {}, false}) {}
 
 RunningServer::RunningServer(web::WebServerOptions options) {
   options.host = "127.0.0.1";

@@ -61,7 +61,7 @@ class WebSecurity : public ::testing::Test {
   }
 
   void serve(storage::SignInPolicy policy = {}, std::vector<std::string> allowed_hosts = {}) {
-    server_.emplace(web::WebServerOptions{"127.0.0.1", 0, {}, root_ / "home", std::move(allowed_hosts), policy});
+    server_.emplace(web::WebServerOptions{"127.0.0.1", 0, {}, root_ / "home", std::move(allowed_hosts), policy, false});
     alice_.emplace(server_->port());
     bob_.emplace(server_->port());
     ASSERT_TRUE(alice_->sign_in("alice", "alice-password")) << alice_->last_refusal();

@@ -133,6 +133,58 @@ TEST_F(WebServer, TheSessionCookieIsHttpOnlyAndSameSiteStrict) {
   const auto unknown = alice_->raw().Post("/api/sign-in", R"({"name":"carol","password":"wrong-password"})", "application/json");
   EXPECT_EQ(unknown->status, 401);
   EXPECT_EQ(unknown->body.find("carol"), std::string::npos) << "the answer must not tell which names exist";
+  // Served directly over HTTP, a Secure cookie would never come back: not Secure.
+  EXPECT_EQ(cookie.find("Secure"), std::string::npos) << cookie;
+}
+
+TEST_F(WebServer, BehindATlsProxyTheSessionCookieIsSecureAndStillWorks) {
+  RunningServer proxied(web::WebServerOptions{"127.0.0.1", 0, {}, root_ / "home", {}, {}, true});
+  WebClient carol(proxied.port());
+  const auto result = carol.raw().Post("/api/sign-in", R"({"name":"alice","password":"alice-password"})", "application/json");
+  ASSERT_EQ(result->status, 200);
+  const std::string cookie = result->get_header_value("Set-Cookie");
+  EXPECT_NE(cookie.find("; Secure"), std::string::npos) << cookie;
+  EXPECT_NE(cookie.find("HttpOnly"), std::string::npos) << cookie;
+  // The proxy forwards the cookie it got over HTTPS: the session works as ever.
+  WebClient alice(proxied.port());
+  ASSERT_TRUE(alice.sign_in("alice", "alice-password"));
+  EXPECT_EQ(alice.get("/api/projects").status, 200);
+  const Answer out = alice.post("/api/sign-out", json::object());
+  EXPECT_EQ(out.status, 200);
+  bool cleared_secure = false;
+  for (const auto& [name, value] : out.headers)
+    if (name == "Set-Cookie") cleared_secure = value.find("Max-Age=0") != std::string::npos && value.find("; Secure") != std::string::npos;
+  EXPECT_TRUE(cleared_secure);
+}
+
+TEST_F(WebServer, BehindATlsProxyFailedSignInsLockTheForwardedClientNotEveryone) {
+  RunningServer proxied(web::WebServerOptions{"127.0.0.1", 0, {}, root_ / "home", {}, {}, true});
+  WebClient client(proxied.port());
+  const auto sign_in = [&](const std::string& forwarded_for, const std::string& name, const std::string& password) {
+    const httplib::Headers headers{{"X-Forwarded-For", forwarded_for}};
+    return client.raw()
+        .Post("/api/sign-in", headers, json{{"name", name}, {"password", password}}.dump(), "application/json")
+        ->status;
+  };
+  // Twenty failures from one client (each under another name, so that no name locks)...
+  for (int i = 0; i < 20; ++i) EXPECT_EQ(sign_in("198.51.100.7, 203.0.113.5", "nobody" + std::to_string(i), "x-wrong-pass"), 401);
+  // ...lock that client, named by the address the proxy appended, whatever comes before it...
+  EXPECT_EQ(sign_in("203.0.113.5", "alice", "alice-password"), 429);
+  EXPECT_EQ(sign_in("10.9.9.9, 203.0.113.5", "alice", "alice-password"), 429);
+  // ...and no one else behind the same proxy.
+  EXPECT_EQ(sign_in("203.0.113.9", "alice", "alice-password"), 200);
+  EXPECT_EQ(sign_in("203.0.113.5, 203.0.113.10", "bob", "bob-password"), 200);
+
+  // Without --behind-tls the header is anyone's to write: it names no one.
+  WebClient direct(server_->port());
+  for (int i = 0; i < 20; ++i) {
+    const httplib::Headers spoofed{{"X-Forwarded-For", "192.0.2." + std::to_string(i)}};
+    direct.raw().Post("/api/sign-in", spoofed, json{{"name", "nobody" + std::to_string(i)}, {"password", "x-wrong-pass"}}.dump(),
+                      "application/json");
+  }
+  const httplib::Headers fresh{{"X-Forwarded-For", "192.0.2.200"}};
+  EXPECT_EQ(direct.raw().Post("/api/sign-in", fresh, R"({"name":"alice","password":"alice-password"})", "application/json")->status,
+            429);
 }
 
 TEST_F(WebServer, APostWithoutTheCsrfTokenIsRefused) {
