@@ -28,6 +28,19 @@ void BackgroundDesigns::reap() {
 StartedDesign BackgroundDesigns::start(Home& home, const storage::User& user, const DesignLaunch& launch) {
   std::lock_guard lock(mutex_);
   reap();
+  // A design asked to stop is winding down (and may be resumed right away): it does not count.
+  int mine = 0, all = 0;
+  for (const auto& [id, job] : jobs_) {
+    if (job->cancel.cancelled()) continue;
+    ++all;
+    mine += job->user_id == user.id ? 1 : 0;
+  }
+  if (mine >= kPerUser)
+    throw Conflict("you have " + std::to_string(mine) + " designs running on this server, the most one user may: stop one, "
+                   "or run more with the CLI (run-design) or on a cluster");
+  if (all >= kPerServer)
+    throw Conflict("this server runs " + std::to_string(all) + " designs already, the most it takes: try again "
+                   "when one has finished");
   ProjectDesignRequest request = launch.design;
   request.owner = storage::owner_text(storage::server_thread(job_ + "-" + std::to_string(next_job_++)));
   request.files = FileScope::own_projects(home, user);  // a server's user names only their own files
@@ -43,6 +56,7 @@ StartedDesign BackgroundDesigns::start(Home& home, const storage::User& user, co
   auto job = std::make_unique<Job>();
   Job* j = job.get();
   j->project_id = design->project.id;
+  j->user_id = user.id;
   j->thread = std::thread([design, j] {
     try {
       run_project_design(*design, {.threads = 0, .evaluator = nullptr, .observer = nullptr, .cancel = &j->cancel});

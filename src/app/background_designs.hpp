@@ -21,12 +21,18 @@ namespace sd::app {
 
 class BackgroundDesigns final : public DesignBackend {
  public:
+  /// Designs one user may run here at once, and all users together: each takes every core, so
+  /// more only share them, and one user cannot take the server's threads from the others.
+  static constexpr int kPerUser = 2;
+  static constexpr int kPerServer = 8;
+
   /// `job` names this process' designs in their leases ("web" -> "web-1", "web-2", ...).
   explicit BackgroundDesigns(std::string job) : job_(std::move(job)) {}
   ~BackgroundDesigns();  // cancels every design (they become interrupted) and waits for them
 
   /// Starts (or resumes) launch.design.project's design on a thread; the errors of
   /// start_project_design. Its files may only be the user's own (FileScope::own_projects).
+  /// Conflict, before anything changes, past kPerUser or kPerServer designs running here.
   StartedDesign start(Home& home, const storage::User& user, const DesignLaunch& launch) override;
   /// Asks the design to stop after its current race step (it is still running when this
   /// returns). Conflict when it runs on a thread of another process.
@@ -39,6 +45,7 @@ class BackgroundDesigns final : public DesignBackend {
  private:
   struct Job {
     std::int64_t project_id = 0;
+    std::int64_t user_id = 0;
     CancelToken cancel;
     std::atomic<bool> done{false};
     std::thread thread;

@@ -623,6 +623,30 @@ TEST_F(WebServer, ADesignStartedFromThePageIsFollowedStoppedAndResumed) {
   EXPECT_EQ(alice_->get("/api/projects/d/designs").body.size(), 1u);
 }
 
+TEST_F(WebServer, OneUserRunsAtMostTwoDesignsHereAndTheThirdChangesNothing) {
+  const json fsm{{"flavours", "chocolate"}, {"architectures", "fsm"}, {"seed", 3}};
+  for (const char* name : {"p1", "p2", "p3"}) alice_project(name, "200000");
+  ASSERT_EQ(alice_->post("/api/projects/p1/designs", fsm).status, 200);
+  ASSERT_EQ(alice_->post("/api/projects/p2/designs", fsm).status, 200);
+  const Answer third = alice_->post("/api/projects/p3/designs", fsm);
+  EXPECT_EQ(third.status, 409) << third.text;
+  EXPECT_NE(third.body.value("error", "").find("2 designs running"), std::string::npos) << third.text;
+  EXPECT_TRUE(alice_->get("/api/projects/p3/designs").body.empty()) << "refused before anything is recorded";
+  // Another user is not held back by Alice's.
+  {
+    const auto folder = root_ / "home" / "users" / "bob" / "projects" / "b";
+    std::filesystem::create_directories(folder);
+    const Answer made = bob_->post("/api/projects", {{"name", "b"}, {"mission", write_short_mission(folder).string()}, {"budget", "200000"}});
+    ASSERT_EQ(made.status, 200) << made.text;
+    EXPECT_EQ(bob_->post("/api/projects/b/designs", fsm).status, 200);
+  }
+  // A design asked to stop no longer counts: the third starts at once.
+  ASSERT_EQ(alice_->post("/api/projects/p1/designs/stop", json::object()).status, 200);
+  EXPECT_EQ(alice_->post("/api/projects/p3/designs", fsm).status, 200);
+  for (const char* name : {"p2", "p3"}) alice_->post(std::string("/api/projects/") + name + "/designs/stop", json::object());
+  bob_->post("/api/projects/b/designs/stop", json::object());
+}
+
 TEST_F(WebServer, ASecondServerCannotTakeAPortAlreadyServed) {
   web::WebServer second({"127.0.0.1", server_->port(), {}, root_ / "home", {}, {}});
   EXPECT_THROW(second.bind(), std::runtime_error);
