@@ -4,6 +4,7 @@
 #include "app/inputs.hpp"
 #include "app/lease_keeper.hpp"
 #include "control/config_string.hpp"
+#include "evaluation/results_version.hpp"
 #include "missions/catalogue.hpp"
 #include "storage/design_store.hpp"
 #include "storage/lease.hpp"
@@ -20,6 +21,31 @@ LeaseKeeper design_lease(const ProjectDesign& d) {
 }
 
 }  // namespace
+
+namespace {
+
+/// Whether `prepared`, seeded `seed`, would run exactly as `finished` ran.
+bool repeats(const storage::Design& finished, const PreparedDesign& prepared, std::uint64_t seed, std::int64_t budget) {
+  if (finished.state != storage::DesignState::finished || finished.seed != seed || finished.budget != budget ||
+      finished.mission != prepared.mission_reference || finished.architectures != prepared.choice.architectures_text() ||
+      finished.flavours != prepared.choice.flavours_text())
+    return false;
+  try {  // the same mission file may have been edited since, or the build may score otherwise
+    const storage::DesignMeta meta = storage::DesignStore::open(finished.folder).meta();
+    return !meta.mission_digest.empty() && meta.mission_digest == prepared.mission.digest &&
+           meta.results_version == kResultsVersion;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+}  // namespace
+
+AlreadyFinished::AlreadyFinished(storage::Design finished, const std::string& project)
+    : storage::Conflict("design " + std::to_string(finished.id) + " of " + project + " already finished with this mission, budget, " +
+               "design space and seed " + std::to_string(finished.seed) +
+               ": it would only repeat it (run-design --new, or fresh in the web API, designs it again)"),
+      design(std::move(finished)) {}
 
 ProjectDesign start_project_design(Home& home, const storage::User& user, const ProjectDesignRequest& request) {
   storage::Workspace& workspace = home.workspace();
@@ -53,6 +79,8 @@ ProjectDesign start_project_design(Home& home, const storage::User& user, const 
   std::optional<PreparedDesign> checked;
   if (project.mission && project.budget)  // else Designs::start says what is missing
     checked = check_new_design({*project.mission, *project.budget, request.space, seed, request.files});
+  if (checked && latest && request.seed && !request.fresh && repeats(*latest, *checked, seed, *project.budget))
+    throw AlreadyFinished(*latest, project.name);
   const design::DesignSpaceChoice choice = checked ? checked->choice : resolve_space(request.space);
   std::optional<storage::Design> abandoned;
   if (checked && latest && latest->state == storage::DesignState::interrupted && request.fresh) {
@@ -92,9 +120,12 @@ void hand_over(ProjectDesign& d, const std::string& new_owner) {
   d.design.owner = new_owner;
 }
 
-TestTarget test_target(Home& home, const storage::User& user, const std::optional<ControlSoftware>& given) {
-  TestTarget target;
-  target.project = storage::Projects(home.workspace(), user).require_active();
+namespace {
+
+/// Fills target.software and .mission for target.project: the given software, or the best of
+/// design `design`, or of the last finished design.
+void complete_target(TestTarget& target, Home& home, const std::optional<ControlSoftware>& given,
+                     std::optional<std::int64_t> design, const FileScope& scope) {
   const storage::Project& project = target.project;
   if (!project.mission)
     throw NotFound("project " + project.name + " has no mission; choose one with: swarmdesign set-mission");
@@ -103,19 +134,41 @@ TestTarget test_target(Home& home, const storage::User& user, const std::optiona
     target.configuration = to_config_string(*given);
   } else {
     const auto designs = storage::Designs(home.workspace(), project).list();
-    const auto finished = std::find_if(designs.rbegin(), designs.rend(), [](const auto& d) { return d.best_config; });
-    if (finished == designs.rend())
-      throw NotFound("project " + project.name +
-                     " has no finished design yet: give the control software (--fsm-config ...) to test");
-    target.design_id = finished->id;
-    target.software = parse_control_software(*finished->best_config);
-    target.configuration = *finished->best_config;
+    const auto chosen = std::find_if(designs.rbegin(), designs.rend(), [&](const auto& d) {
+      return design ? d.id == *design : d.best_config.has_value();
+    });
+    if (chosen == designs.rend())
+      throw NotFound(design ? "project " + project.name + " has no design " + std::to_string(*design)
+                            : "project " + project.name +
+                                  " has no finished design yet: give the control software (--fsm-config ...) to test");
+    if (!chosen->best_config)
+      throw NotFound("design " + std::to_string(chosen->id) + " has no best control software yet");
+    target.design_id = chosen->id;
+    target.software = parse_control_software(*chosen->best_config);
+    target.configuration = *chosen->best_config;
   }
   try {
-    target.mission = load_mission(*project.mission);
-  } catch (const MissionError& e) {
+    target.mission = load_requested_mission(*project.mission, scope);
+  } catch (const InvalidRequest& e) {
     throw NotFound("the mission of project " + project.name + " cannot be loaded: " + e.what());
   }
+}
+
+}  // namespace
+
+TestTarget test_target(Home& home, const storage::User& user, const std::optional<ControlSoftware>& given) {
+  TestTarget target;
+  target.project = storage::Projects(home.workspace(), user).require_active();
+  complete_target(target, home, given, std::nullopt, FileScope::local());
+  return target;
+}
+
+TestTarget test_target(Home& home, const storage::User& user, const std::string& project,
+                       const std::optional<ControlSoftware>& given, std::optional<std::int64_t> design,
+                       const FileScope& scope) {
+  TestTarget target;
+  target.project = storage::Projects(home.workspace(), user).get(project);
+  complete_target(target, home, given, design, scope);
   return target;
 }
 

@@ -14,9 +14,11 @@
 
 #include "app/design_job.hpp"
 #include "app/home.hpp"
+#include "app/user_files.hpp"
 #include "storage/cluster_jobs.hpp"
 #include "storage/design_status.hpp"
 #include "storage/designs.hpp"
+#include "storage/errors.hpp"
 #include "storage/projects.hpp"
 
 namespace sd::app {
@@ -40,9 +42,17 @@ struct ProjectDesign {
   std::optional<storage::Design> abandoned;  // an interrupted design given up by `fresh`
 };
 
+/// A design asked for again that would only repeat one that finished: the same mission (file
+/// content included), budget, design space and the seed given explicitly. Run again after a
+/// kill that came after the design had ended, the command finds its result, not a copy of it.
+struct AlreadyFinished : storage::Conflict {
+  AlreadyFinished(storage::Design finished, const std::string& project);
+  storage::Design design;
+};
+
 /// Resumes the project's interrupted design (unless `fresh`), or records a new one with the
 /// project's mission and budget. Everything that can be refused is checked before the designs
-/// table changes.
+/// table changes. AlreadyFinished (unless `fresh`) when the new one would repeat the last.
 ProjectDesign start_project_design(Home& home, const storage::User& user, const ProjectDesignRequest& request);
 
 /// Runs it, renewing its lease, and records how it ended: finished (best configuration and
@@ -63,5 +73,11 @@ struct TestTarget {
   std::string configuration;              // its configuration string
 };
 TestTarget test_target(Home& home, const storage::User& user, const std::optional<ControlSoftware>& given);
+/// The same for one of the user's projects by name (the web page): the given software, or the
+/// best of design `design` (NotFound unless it is the project's and has one), or of its last
+/// finished design, on the project's mission read under `scope`.
+TestTarget test_target(Home& home, const storage::User& user, const std::string& project,
+                       const std::optional<ControlSoftware>& given, std::optional<std::int64_t> design,
+                       const FileScope& scope);
 
 }  // namespace sd::app

@@ -22,6 +22,7 @@
 #include "cli/export_display.hpp"
 #include "cli/score_output.hpp"
 #include "cli/slurm_flags.hpp"
+#include "control/config_string.hpp"
 
 namespace sd::cli {
 namespace {
@@ -77,9 +78,19 @@ void run_design(const RunDesignOptions& o, int mpi_ranks) {
   launch.mpi_ranks = mpi_ranks;
   // The home's database connection is closed before a fork: SQLite connections must not cross one.
   std::optional<app::StartedDesign> started;
-  {
+  try {
     app::Home home;
     started.emplace(app::start_design(home, app::signed_in_user(home), launch));
+  } catch (const app::AlreadyFinished& done) {
+    // The same command again after its design ended (a kill that came too late, a second
+    // terminal): its result, as it ended, rather than an identical second design.
+    const storage::Design& d = done.design;
+    std::cout << "Design " << d.id << " already finished with this mission, budget, design space and seed " << d.seed
+              << " (the same command again would only repeat it; --new designs it again).\n"
+              << "Best control software (mean score " << format_number(d.best_score.value_or(0.0)) << "):\n  "
+              << d.best_config.value_or("") << "\nTest it on fresh seeds with: swarmdesign test-design\n"
+              << std::flush;
+    return;
   }
   print_started(*started, launch.design.space_given);
   if (!started->run_here) return;  // it runs elsewhere (a Slurm job)
@@ -122,13 +133,16 @@ CommandRegistrar registrar{40, [](CLI::App& app, Context& context) {
   cmd->add_option("--threads", run->threads, "Simulations in parallel (default: all cores)")->check(CLI::NonNegativeNumber);
   cmd->add_flag("--detach", run->detach, "Run in the background, surviving the terminal closing; watch it with status");
   cmd->add_flag("--new", run->fresh,
-                "Start a new design even if the last one was interrupted; that one becomes failed (its folder stays)");
+                "Start a new design even if the last one was interrupted (that one becomes failed; its folder stays) "
+                "or finished with the same settings and --seed (which it would repeat exactly)");
   cmd->footer(
       "Runs in the foreground with a progress line, or with --detach in the background (output in the\n"
       "design's design.log). One design runs per project at a time. If the project's last design was\n"
       "interrupted (killed, machine restarted), run-design resumes it with the settings it started with\n"
       "and it ends exactly as if it had never stopped; when it cannot be resumed (its mission was edited,\n"
-      "or it was begun by a swarmdesign whose runs score differently), --new gives it up and starts anew.\n\n"
+      "or it was begun by a swarmdesign whose runs score differently), --new gives it up and starts anew.\n"
+      "Run again with the same --seed after its design finished, it prints that design's result rather\n"
+      "than repeat it (--new repeats it).\n\n"
       "In a cluster project (new-project --cluster) the design is written as an sbatch script and\n"
       "submitted as a Slurm job, with the Slurm options above; status follows it, stop-design cancels\n"
       "it, and run-design submits an interrupted one again (it resumes from its last checkpoint).\n\n"

@@ -54,6 +54,30 @@ TEST_F(crash_resume, RunDesignKilledWhileCreatingItsDatabaseOrWritingACheckpoint
   EXPECT_EQ(experiment_log(folder), experiment_log(scratch() / "reference"));
 }
 
+// Found by a check kept apart (bench/crash_loop.py's late re-run): a kill that came after the
+// design had finished, then the same command as a resume, designed it again as design 2.
+TEST_F(crash_resume, TheSameRunDesignAfterItsDesignFinishedFindsTheResultInsteadOfDesigningAgain) {
+  user_with_active_project("alice", "swarm");
+  run_ok({"set-mission", mission_});
+  run_ok({"set-budget", "728"});
+  const std::vector<std::string> start{"run-design", "--bt", "--maple", "--seed", "7", "--threads", "1"};
+  run_ok(start);
+  const std::string best = query("SELECT best_config FROM designs WHERE id = 1");
+
+  const std::string again = run_ok(start);
+  EXPECT_NE(again.find("Design 1 already finished"), std::string::npos) << again;
+  EXPECT_NE(again.find(best), std::string::npos) << again;
+  EXPECT_EQ(query("SELECT count(*) || ' ' || state FROM designs"), "1 finished");
+  EXPECT_FALSE(std::filesystem::exists(home() / "users" / "alice" / "projects" / "swarm" / "designs" / "2"));
+
+  // Another seed, or --new, is a new design; --new with the same seed repeats the first exactly.
+  run_ok({"run-design", "--bt", "--maple", "--seed", "7", "--threads", "1", "--new"});
+  EXPECT_EQ(query("SELECT count(*) FROM designs WHERE state = 'finished'"), "2");
+  EXPECT_EQ(query("SELECT best_config FROM designs WHERE id = 2"), best);
+  EXPECT_EQ(experiment_log(home() / "users" / "alice" / "projects" / "swarm" / "designs" / "2"),
+            experiment_log(home() / "users" / "alice" / "projects" / "swarm" / "designs" / "1"));
+}
+
 TEST_F(crash_resume, TheDesignCommandKilledWhileCreatingItsDatabaseRunsAgainWithTheSameCommand) {
   const json expected = reference();
   const std::vector<std::string> start{"design", "--mission", mission_, "--budget", "728", "--bt", "--maple",
