@@ -3,12 +3,15 @@
 #include "app/design_backends.hpp"
 #include "app/documents.hpp"
 #include "app/errors.hpp"
+#include "app/evaluation_job.hpp"
 #include "app/experiment_job.hpp"
 #include "app/inputs.hpp"
 #include "app/project_design.hpp"
 #include "app/projects.hpp"
 #include "app/saved_software.hpp"
+#include "control/config_string.hpp"
 #include "design/design_space.hpp"
+#include "statistics/descriptive.hpp"
 #include "storage/designs.hpp"
 #include "web/http_io.hpp"
 #include "web/routes.hpp"
@@ -18,6 +21,9 @@ namespace sd::web {
 namespace {
 
 using nlohmann::json;
+
+constexpr std::size_t kMaxTestSeeds = 100;
+constexpr double kMaxTestRobotTicks = 100'000'000.0;  // 100 seeds of 20 robots for 5 000 s
 
 storage::Project project_of(Call& call) {
   return storage::Projects(call.home.workspace(), call.user).get(call.match(1));
@@ -85,6 +91,33 @@ void add_project_routes(Routes& routes) {
   routes.post(project + "/designs/stop", [](Call& call) -> json {
     app::stop_design(call.home, call.user, call.match(1), &call.context.designs);
     return {{"stopping", true}};
+  });
+
+  // test-design from the page: a design's best (or the control software sent) on fresh seeds,
+  // scored as the CLI scores it.
+  routes.post(project + "/test", [](Call& call) {
+    std::optional<std::int64_t> design;
+    if (call.body.contains("design") && !call.body.at("design").is_null()) {
+      if (!call.body.at("design").is_number_integer()) throw app::InvalidRequest("design must be a design's number");
+      design = call.body.at("design").get<std::int64_t>();
+    }
+    const std::string seeds_text = call.body.contains("seeds") ? text_field(call.body, "seeds") : "1-10";
+    const std::vector<std::uint64_t> seeds = app::parse_seed_range(seeds_text);
+    if (seeds.size() > kMaxTestSeeds)
+      throw app::InvalidRequest("seeds " + seeds_text + ": at most " + std::to_string(kMaxTestSeeds) + " seeds from the page");
+    std::optional<ControlSoftware> given;
+    if (call.body.contains("text") && !call.body.at("text").is_null()) given = parse_control_software(text_field(call.body, "text"));
+    const app::TestTarget target = app::test_target(call.home, call.user, call.match(1), given, design,
+                                                    app::FileScope::own_projects(call.home, call.user));
+    // A request holds a server thread: bounded like an Exec run, per seed.
+    if (static_cast<double>(target.mission.robots) * target.mission.ticks * static_cast<double>(seeds.size()) > kMaxTestRobotTicks)
+      throw app::InvalidRequest("the mission is too long to test on " + std::to_string(seeds.size()) +
+                                " seeds from the page: use swarmdesign test-design");
+    const std::vector<double> scores = app::score_seeds(target.mission, target.software, seeds);
+    json doc = app::scores_document(target.mission, target.software, seeds, scores);
+    doc["design"] = target.design_id ? json(*target.design_id) : json();
+    if (scores.size() > 1) doc["sd"] = statistics::sample_standard_deviation(scores);
+    return doc;
   });
 
   routes.get(project + "/software", [](Call& call) {

@@ -621,6 +621,26 @@ TEST_F(WebServer, ADesignStartedFromThePageIsFollowedStoppedAndResumed) {
   EXPECT_GE(done.body.at("progress").at("experiments_used").get<std::int64_t>(), used);
   EXPECT_FALSE(done.body.at("race_log").empty());
   EXPECT_EQ(alice_->get("/api/projects/d/designs").body.size(), 1u);
+
+  // Its best tested on fresh seeds from the page scores what test-design scores.
+  const Answer tested = alice_->post("/api/projects/d/test", {{"seeds", "11-15"}});
+  ASSERT_EQ(tested.status, 200) << tested.text;
+  EXPECT_EQ(tested.body.at("design"), started.body.at("id"));
+  const std::string best = tested.body.at("control_software");
+  const std::string mission = alice_->get("/api/projects").body.at(0).at("mission");
+  const std::vector<double> expected =
+      app::score_seeds(load_mission(mission), parse_control_software(best), {11, 12, 13, 14, 15});
+  ASSERT_EQ(tested.body.at("runs").size(), 5u);
+  for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(tested.body.at("runs").at(i).at("score").get<double>(), expected[i]);
+  EXPECT_TRUE(tested.body.contains("sd") && tested.body.contains("mean") && tested.body.contains("median"));
+  EXPECT_EQ(alice_->post("/api/projects/d/test", {{"seeds", "1-500"}}).status, 400);
+  EXPECT_EQ(alice_->post("/api/projects/d/test", {{"seeds", "1-5"}, {"design", 99}}).status, 404);
+  EXPECT_EQ(bob_->post("/api/projects/d/test", {{"seeds", "1-5"}}).status, 404);
+  // Control software sent with the request is tested instead (the page sends the best it shows).
+  const Answer given = alice_->post("/api/projects/d/test", {{"seeds", "11-15"}, {"text", best}});
+  ASSERT_EQ(given.status, 200) << given.text;
+  EXPECT_EQ(given.body.at("runs"), tested.body.at("runs"));
+  EXPECT_EQ(alice_->post("/api/projects/d/test", {{"seeds", "1-2"}, {"text", "--fsm-config --nstates 1 --s0 99"}}).status, 400);
 }
 
 TEST_F(WebServer, OneUserRunsAtMostTwoDesignsHereAndTheThirdChangesNothing) {
