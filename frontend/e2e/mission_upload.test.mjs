@@ -1,7 +1,8 @@
 // A user's own mission, brought in from the page: uploaded into a project from the Missions
 // tab, in headless chromium against the real server. Bad files get the server's one line and
 // nothing is stored; a good one is drawn, offered to new projects and to Exec, runs, and a
-// project on it designs to the end (shown as finished, budget spent, not as an error). A
+// project on it designs to the end (shown as finished, budget spent, not as an error) and its
+// best is tested on fresh seeds from the page. A
 // second account sees none of it and cannot read, draw, run or overwrite it.
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
@@ -137,6 +138,23 @@ test('a project on the uploaded mission designs to its end: finished, budget spe
   assert.match(await page.getAttribute('#design-state', 'title'), /^finished because: Not enough budget/);
   assert.match(await page.textContent('#alive'), /^\d+( racing of \d+)?$/);
   await shot(page, 'designed-to-the-end');
+
+  // Its best tested on fresh seeds from the page: what evaluate gives on those seeds.
+  await page.fill('#test-seeds', '1-8');
+  await page.click('#test-run');
+  await page.waitForSelector('[data-testid="test-summary"]', { timeout: 30000 });
+  assert.match(await page.textContent('[data-testid="test-summary"]'), /^mean .* · sd .* · median .* over 8 seeds \(1-8, maximize\)$/);
+  assert.equal(await page.locator('#test-result svg.box-plot circle.seed-point').count(), 8);
+  const best = await page.getAttribute('#watch-best', 'data-text');
+  const expected = JSON.parse(cli(server.env, ['evaluate', '--mission', file, '--seeds', '1-8', '--json', ...best.split(' ')])).mean;
+  assert.equal(Number(await page.getAttribute('[data-testid="test-summary"]', 'data-mean')), expected);
+  await page.locator('#test-result').scrollIntoViewIfNeeded();
+  await shot(page, 'tested-on-seeds');
+  // A bad range gets the server's one line.
+  await page.fill('#test-seeds', '1-500');
+  await page.click('#test-run');
+  await page.waitForSelector('#test-result .error');
+  assert.match(await page.textContent('#test-result .error'), /at most 100 seeds/);
 });
 
 test('another account sees, reads, runs and overwrites none of it', { timeout: 30000 }, async () => {

@@ -9,6 +9,7 @@ import { shortName } from './missions.js';
 import { scoreSpan } from './numbers.js';
 import { linePlot } from './plot.js';
 import { el } from './properties.js';
+import { initSeedTest } from './seed_test.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -18,6 +19,7 @@ export function initMonitor({ onWatch, onEdit, missions }) {
   let listed = null;  // {id, state} of the newest row of the design list as last drawn
   let timer = null;
   let status = null;
+  let testTarget = null;  // {project, text} of the best shown, for "Test on seeds"
   let bestDrawn = null;
   let plot = null;
   let visible = false;
@@ -102,7 +104,8 @@ export function initMonitor({ onWatch, onEdit, missions }) {
       if (plot) plot.setData([], []);
       showConvergence(false);
       $('best-score').textContent = 'no configuration yet';
-      for (const id of ['watch-best', 'edit-best']) $(id).disabled = true;
+      for (const id of ['watch-best', 'edit-best', 'test-run']) $(id).disabled = true;
+      testTarget = null;
       $('design-start').disabled = false;
       $('design-stop').disabled = true;
       showResumable(null);
@@ -143,6 +146,8 @@ export function initMonitor({ onWatch, onEdit, missions }) {
     $('best-score').replaceChildren(...(best
       ? [document.createTextNode('mean score '), scoreSpan(el, score, { testid: 'best-mean' }), document.createTextNode(`${runs} (${directionOf(design.mission)})`)]
       : [document.createTextNode('no configuration yet')]));
+    testTarget = best ? { project: selected, text: best } : null;
+    $('test-run').disabled = !best;
     for (const id of ['watch-best', 'edit-best']) {
       $(id).disabled = !best;
       $(id).dataset.text = best || '';
@@ -236,6 +241,7 @@ export function initMonitor({ onWatch, onEdit, missions }) {
     fastUntil = Date.now() + 10000;
     poll();
   });
+  initSeedTest(() => testTarget);
   $('watch-best').addEventListener('click', () => {
     const b = $('watch-best');
     if (b.dataset.text) onWatch(b.dataset.text, b.dataset.mission);
