@@ -47,11 +47,18 @@ StoppedDesign stop_design(Home& home, const storage::User& user, const std::opti
 }
 
 DesignStatus design_status(Home& home, const storage::User& user, bool complete,
-                           const std::optional<std::string>& project) {
+                           const std::optional<std::string>& project, std::optional<std::int64_t> design_id) {
   DesignStatus status;
   storage::Projects projects(home.workspace(), user);
   status.project = project ? projects.get(*project) : projects.require_active();
-  status.design = storage::Designs(home.workspace(), status.project).latest();
+  storage::Designs designs(home.workspace(), status.project);
+  if (design_id) {
+    for (auto& design : designs.list())
+      if (design.id == *design_id) status.design = std::move(design);
+    if (!status.design) designs.get(*design_id);  // throws its NotFound
+  } else {
+    status.design = designs.latest();
+  }
   if (!status.design) return status;
   std::optional<storage::DesignProgress> on_cluster;
   if (status.project.cluster) {

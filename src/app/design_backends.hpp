@@ -4,6 +4,7 @@
 // and which brings it up to date for `status`.
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,7 +39,10 @@ struct DesignStatus {
   std::vector<storage::ConvergencePoint> convergence;  // with `complete`: the best elite per iteration
   std::optional<storage::ClusterJob> cluster_job;  // a cluster project's design: its Slurm job
 };
+/// Of the project's latest design, or of design `design_id` (NotFound if the project has none
+/// so numbered).
 DesignStatus design_status(Home& home, const storage::User& user, bool complete,
-                           const std::optional<std::string>& project = std::nullopt);
+                           const std::optional<std::string>& project = std::nullopt,
+                           std::optional<std::int64_t> design_id = std::nullopt);
 
 }  // namespace sd::app

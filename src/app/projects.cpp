@@ -4,6 +4,7 @@
 #include "app/inputs.hpp"
 #include "app/user_files.hpp"
 #include "missions/catalogue.hpp"
+#include "storage/designs.hpp"
 #include "storage/validation.hpp"
 
 namespace sd::app {
@@ -29,6 +30,21 @@ std::vector<storage::Project> list_projects(Home& home, const storage::User& use
 storage::Project select_project(Home& home, const storage::User& user, const std::string& name) {
   require(storage::project_name_problem(name));
   return storage::Projects(home.workspace(), user).select(name);
+}
+
+void delete_project(Home& home, const storage::User& user, const std::string& name, const std::string& confirmation) {
+  require(storage::project_name_problem(name));
+  storage::Projects projects(home.workspace(), user);
+  const storage::Project project = projects.get(name);  // NotFound first: nothing to confirm
+  // Names are case-insensitive; the confirmation is the name as the user sees it or typed it.
+  if (confirmation != name && confirmation != project.name)
+    throw InvalidRequest("to delete project " + project.name + ", confirm with its name");
+  projects.remove(project.name);
+}
+
+void delete_design(Home& home, const storage::User& user, const std::optional<std::string>& project,
+                   std::int64_t design_id) {
+  storage::Designs(home.workspace(), project_or_active(home, user, project)).remove(design_id);
 }
 
 storage::Project set_cluster_paths(Home& home, const storage::User& user, const std::string& workdir,

@@ -2,6 +2,7 @@
 // A user's projects and their design settings (mission, budget), for any front end. Every call
 // takes the user explicitly: the CLI passes the one signed in on this machine, a server the one
 // of the request's session, so a user only ever reaches their own projects.
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,6 +24,13 @@ storage::Project create_project(Home& home, const storage::User& user, const std
                                 const std::optional<ClusterRequest>& cluster);
 std::vector<storage::Project> list_projects(Home& home, const storage::User& user);
 storage::Project select_project(Home& home, const storage::User& user, const std::string& name);
+/// Deletes the project, its designs, experiments and files, once `confirmation` repeats its
+/// name (InvalidRequest otherwise); Conflict while one of its designs or experiments runs.
+void delete_project(Home& home, const storage::User& user, const std::string& name, const std::string& confirmation);
+/// Deletes one design of the project (named, or the active one) and its folder; Conflict while
+/// it runs, NotFound for a design the project does not have.
+void delete_design(Home& home, const storage::User& user, const std::optional<std::string>& project,
+                   std::int64_t design_id);
 /// NotFound with a hint when none is selected.
 storage::Project active_project(Home& home, const storage::User& user);
 /// The named project (a server's request, --project), or the active one.

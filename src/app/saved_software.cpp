@@ -18,6 +18,12 @@ std::filesystem::path folder_of(Home& home, const storage::User& user, const std
   return storage::Projects(home.workspace(), user).get(project).folder / "software";
 }
 
+void require_software_name(const std::string& name) {
+  static const std::regex rule("[A-Za-z0-9][A-Za-z0-9._-]{0,63}");
+  if (!std::regex_match(name, rule))
+    throw InvalidRequest("name '" + name + "' must be 1-64 letters, digits, '.', '_' or '-', not starting with '.'");
+}
+
 }  // namespace
 
 std::vector<SavedSoftware> list_saved_software(Home& home, const storage::User& user, const std::string& project) {
@@ -41,14 +47,21 @@ std::vector<SavedSoftware> list_saved_software(Home& home, const storage::User& 
 
 SavedSoftware save_software(Home& home, const storage::User& user, const std::string& project,
                             const std::string& name, const std::string& text) {
-  static const std::regex rule("[A-Za-z0-9][A-Za-z0-9._-]{0,63}");
-  if (!std::regex_match(name, rule))
-    throw InvalidRequest("name '" + name + "' must be 1-64 letters, digits, '.', '_' or '-', not starting with '.'");
+  require_software_name(name);
   SavedSoftware saved{name, to_config_string(parse_control_software(text))};
   const auto folder = FileScope::own_projects(home, user).writable_folder(folder_of(home, user, project),
                                                                           "the folder of saved control software");
   replace_file_durably(folder / (name + ".txt"), saved.text, 0644, Umask::Applies);
   return saved;
+}
+
+void delete_saved_software(Home& home, const storage::User& user, const std::string& project, const std::string& name) {
+  require_software_name(name);
+  const auto folder = FileScope::own_projects(home, user).writable_folder(folder_of(home, user, project),
+                                                                          "the folder of saved control software");
+  // remove() unlinks a link itself, never what it leads to.
+  if (!std::filesystem::remove(folder / (name + ".txt")))
+    throw NotFound("project " + project + " has no saved control software named '" + name + "'");
 }
 
 }  // namespace sd::app

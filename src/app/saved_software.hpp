@@ -19,4 +19,7 @@ std::vector<SavedSoftware> list_saved_software(Home& home, const storage::User& 
 SavedSoftware save_software(Home& home, const storage::User& user, const std::string& project,
                             const std::string& name, const std::string& text);
 
+/// Deletes it; NotFound when the project has no software so named.
+void delete_saved_software(Home& home, const storage::User& user, const std::string& project, const std::string& name);
+
 }  // namespace sd::app

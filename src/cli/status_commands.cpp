@@ -2,8 +2,10 @@
 // designs table and from the design's own design.db (while another process may be writing it).
 #include <CLI/CLI.hpp>
 
+#include <cstdint>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "app/accounts.hpp"
 #include "app/design_backends.hpp"
@@ -20,6 +22,7 @@ namespace {
 
 struct StatusOptions {
   bool complete = false, json = false, argos = false;
+  std::int64_t design = 0;  // 0: the last
 };
 
 void print_progress(const storage::Design& d, const storage::DesignProgress& p) {
@@ -80,7 +83,9 @@ void print_experiments(const std::vector<app::ExperimentProgress>& experiments) 
 void status(const StatusOptions& o) {
   app::Home home;
   const storage::User user = app::signed_in_user(home);
-  const app::DesignStatus status = app::design_status(home, user, o.complete);
+  std::optional<std::int64_t> design;
+  if (o.design > 0) design = o.design;
+  const app::DesignStatus status = app::design_status(home, user, o.complete, std::nullopt, design);
   const auto experiments = app::experiments_progress(home, user, status.project.name);
   if (o.json) {
     nlohmann::json document = app::status_document(status, o.complete);
@@ -125,9 +130,11 @@ CommandRegistrar registrar{41, [](CLI::App& app, Context&) {
   cmd->add_flag("--complete", o->complete, "Add the whole race log: every iteration's configurations, instances, "
                                            "eliminations and elites");
   cmd->add_flag("--json", o->json, "Print one JSON document");
+  cmd->add_option("--design", o->design, "An earlier design of the project, by its number, instead of the last")
+      ->check(CLI::PositiveNumber);
   cmd->add_flag("--argos", o->argos, "Also print the best configuration as ARGoS3-AutoMoDe reads it (export --argos)");
   cmd->footer("Works from another terminal while the design runs.\n\n"
-              "Example:\n  swarmdesign status\n  swarmdesign status --complete --json\n  swarmdesign status --argos");
+              "Example:\n  swarmdesign status\n  swarmdesign status --complete --json\n  swarmdesign status --design 2\n  swarmdesign status --argos");
   cmd->callback([o] { status(*o); });
 }};
 

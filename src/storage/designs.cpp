@@ -4,6 +4,7 @@
 
 #include "storage/clock.hpp"
 #include "storage/errors.hpp"
+#include "storage/folder_removal.hpp"
 #include "storage/lease.hpp"
 
 namespace sd::storage {
@@ -148,6 +149,20 @@ void Designs::fail(std::int64_t design_id, std::string_view from_states) {
   set_state(design_id, DesignState::failed, from_states);
   db.prepare("UPDATE designs SET finished_at = updated_at WHERE id = ?").bind(1, design_id).run();
   transaction.commit();
+}
+
+void Designs::remove(std::int64_t design_id) {
+  Database& db = workspace_.database();
+  Transaction transaction(db);
+  lease().sweep_dead();
+  const Design design = get(design_id);
+  if (design.state == DesignState::running)
+    throw Conflict("design " + std::to_string(design_id) + " of project " + project_.name +
+                   " is running; stop it first (swarmdesign stop-design)");
+  db.prepare("DELETE FROM designs WHERE id = ? AND project_id = ?").bind(1, design_id).bind(2, project_.id).run();
+  FolderRemoval folder(design.folder);
+  transaction.commit();
+  folder.commit();
 }
 
 Design Designs::get(std::int64_t design_id) {

@@ -68,6 +68,9 @@ class Designs {
   /// Gives up an interrupted design (it becomes failed; its folder stays), so that a new one
   /// can start: for a design that cannot be resumed any more.
   void abandon(std::int64_t design_id);
+  /// Deletes a design that does not run (its row, its cluster job's row and its folder);
+  /// Conflict while it runs, NotFound for another project's design.
+  void remove(std::int64_t design_id);
 
   /// The current or last design, for `status`; running designs whose owner is gone are
   /// reported as interrupted.

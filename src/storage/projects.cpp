@@ -2,6 +2,8 @@
 
 #include "storage/clock.hpp"
 #include "storage/errors.hpp"
+#include "storage/folder_removal.hpp"
+#include "storage/lease.hpp"
 #include "storage/validation.hpp"
 
 namespace sd::storage {
@@ -108,6 +110,25 @@ std::vector<Project> Projects::list() {
 Project Projects::get(std::string_view name) {
   if (auto project = query_one("AND p.name = ?2", name)) return *project;
   throw no_such_project(name);
+}
+
+void Projects::remove(std::string_view name) {
+  Database& db = workspace_.database();
+  Transaction transaction(db);
+  const Project project = get(name);
+  for (const LeasedTable& table : {kDesignLeases, kExperimentLeases}) {
+    Lease(db, table, project.id).sweep_dead();
+    auto running = db.prepare("SELECT id FROM " + std::string(table.table) + " WHERE project_id = ? AND state = 'running'");
+    running.bind(1, project.id);
+    if (running.step())
+      throw Conflict("project " + project.name + " has a running " + std::string(table.noun) + " (" +
+                     std::to_string(running.integer(0)) + "); stop it before deleting the project");
+  }
+  // Cascades to its designs, experiments and their results, cluster jobs and the active mark.
+  db.prepare("DELETE FROM projects WHERE id = ? AND owner_id = ?").bind(1, project.id).bind(2, owner_.id).run();
+  FolderRemoval folder(project.folder);
+  transaction.commit();
+  folder.commit();
 }
 
 Project Projects::select(std::string_view name) {

@@ -43,6 +43,9 @@ class Projects {
   /// NotFound (same words for a foreign project) when the owner has no such project.
   Project get(std::string_view name);
   Project select(std::string_view name);
+  /// Deletes the project: its rows (designs, experiments, their results) and its folder with
+  /// everything in it. Conflict while one of its designs or experiments runs.
+  void remove(std::string_view name);
   std::optional<Project> active();
   /// NotFound with a hint when no project is selected.
   Project require_active();

@@ -1,5 +1,7 @@
 // The design monitor: a user's projects, their designs (started and stopped through their
 // backend, app/design_backends.hpp, whoever runs them), and control software saved in a project.
+#include <charconv>
+
 #include "app/design_backends.hpp"
 #include "app/documents.hpp"
 #include "app/errors.hpp"
@@ -48,6 +50,15 @@ app::ProjectDesignRequest design_request(const json& body) {
   return request;
 }
 
+/// A design's number as a route or query gives it.
+std::int64_t design_number(const std::string& text) {
+  std::int64_t id = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), id);
+  if (error != std::errc() || end != text.data() + text.size() || id <= 0)
+    throw app::InvalidRequest("design '" + text + "' must be a design's number");
+  return id;
+}
+
 }  // namespace
 
 void add_project_routes(Routes& routes) {
@@ -65,7 +76,9 @@ void add_project_routes(Routes& routes) {
   });
 
   routes.get(project + "/status", [](Call& call) {
-    const app::DesignStatus status = app::design_status(call.home, call.user, true, call.match(1));
+    std::optional<std::int64_t> design;
+    if (call.request.has_param("design")) design = design_number(call.request.get_param_value("design"));
+    const app::DesignStatus status = app::design_status(call.home, call.user, true, call.match(1), design);
     json doc = app::status_document(status, true);
     doc["running_here"] = call.context.designs.running_here(status.project.id);
     doc["budget"] = status.project.budget ? json(*status.project.budget) : json();
@@ -85,6 +98,19 @@ void add_project_routes(Routes& routes) {
     launch.design = design_request(call.body);
     launch.design.project = call.match(1);
     return app::design_row_document(app::start_design(call.home, call.user, launch, &call.context.designs).design);
+  });
+
+  // Deleting asks for the project's name again, as the page's confirmation does: a script
+  // cannot delete a project by a mistaken route alone.
+  routes.post(project + "/delete", [](Call& call) -> json {
+    app::delete_project(call.home, call.user, call.match(1), call.body.contains("confirm") ? text_field(call.body, "confirm") : "");
+    return {{"deleted", call.match(1)}};
+  });
+
+  routes.post(project + "/designs/([0-9]{1,18})/delete", [](Call& call) -> json {
+    const std::int64_t id = design_number(call.match(2));
+    app::delete_design(call.home, call.user, call.match(1), id);
+    return {{"deleted", id}};
   });
 
   // Whoever runs it: this server's thread, a CLI process of this machine, a Slurm job.
@@ -125,6 +151,11 @@ void add_project_routes(Routes& routes) {
     for (const auto& s : app::list_saved_software(call.home, call.user, call.match(1)))
       list.push_back({{"name", s.name}, {"text", s.text}});
     return list;
+  });
+
+  routes.post(project + "/software/([A-Za-z0-9][A-Za-z0-9._-]{0,63})/delete", [](Call& call) -> json {
+    app::delete_saved_software(call.home, call.user, call.match(1), call.match(2));
+    return {{"deleted", call.match(2)}};
   });
 
   routes.post(project + "/software", [](Call& call) -> json {

@@ -105,7 +105,10 @@ TEST_F(WebServer, EveryApiRouteAnswers401WithoutASession) {
   WebClient stranger(server_->port());
   const std::vector<std::string> gets = {"/api/session", "/api/catalogue", "/api/missions", "/api/missions/svg?name=aac",
                                          "/api/runs/1/stream", "/api/projects", "/api/projects/p/status",
-                                         "/api/projects/p/designs", "/api/projects/p/software"};
+                                         "/api/projects/p/designs", "/api/projects/p/software",
+                                         "/api/projects/p/status?design=1", "/api/projects/p/missions",
+                                         "/api/projects/p/experiments", "/api/projects/p/experiments/e/report",
+                                         "/api/projects/p/experiments/e/boxes.csv"};
   for (const auto& path : gets) {
     const Answer a = stranger.get(path);
     EXPECT_EQ(a.status, 401) << "GET " << path;
@@ -113,7 +116,9 @@ TEST_F(WebServer, EveryApiRouteAnswers401WithoutASession) {
   }
   const std::vector<std::string> posts = {"/api/sign-out", "/api/parse", "/api/print", "/api/runs", "/api/projects",
                                           "/api/projects/p/designs", "/api/projects/p/designs/stop",
-                                          "/api/projects/p/software"};
+                                          "/api/projects/p/software", "/api/projects/p/delete",
+                                          "/api/projects/p/designs/1/delete", "/api/projects/p/software/w/delete",
+                                          "/api/projects/p/missions", "/api/projects/p/test"};
   for (const auto& path : posts) EXPECT_EQ(stranger.post(path, {{"text", kFsm}}).status, 401) << "POST " << path;
   // A forged or ended session is no session.
   httplib::Headers forged{{"Cookie", "sd_session=0123456789abcdef"}};
@@ -198,6 +203,10 @@ TEST_F(WebServer, APostWithoutTheCsrfTokenIsRefused) {
   EXPECT_EQ(alice_->raw().Post("/api/sign-in", "name=alice&password=alice-password", "application/x-www-form-urlencoded")->status,
             415);
   EXPECT_EQ(alice_->post("/api/parse", {{"text", kFsm}}).status, 200);
+  // A page of another site cannot make Alice's browser delete her project.
+  alice_project("mine");
+  EXPECT_EQ(alice_->post("/api/projects/mine/delete", {{"confirm", "mine"}}, false).status, 403);
+  EXPECT_EQ(alice_->get("/api/projects").body.size(), 1u);
 }
 
 TEST_F(WebServer, ASecondUserCanNeitherListNorWatchNorStopTheFirstUsersWork) {
@@ -652,6 +661,70 @@ TEST_F(WebServer, ADesignStartedFromThePageIsFollowedStoppedAndResumed) {
   ASSERT_EQ(given.status, 200) << given.text;
   EXPECT_EQ(given.body.at("runs"), tested.body.at("runs"));
   EXPECT_EQ(alice_->post("/api/projects/d/test", {{"seeds", "1-2"}, {"text", "--fsm-config --nstates 1 --s0 99"}}).status, 400);
+}
+
+TEST_F(WebServer, EarlierDesignsOpenAndWhatIsDeletedIsOnlyWhatWasNamedAndOnlyByItsOwner) {
+  const json fsm{{"flavours", "chocolate"}, {"architectures", "fsm"}, {"seed", 3}};
+  alice_project("d", "200000");
+  alice_project("kept", "200000");
+  ASSERT_EQ(alice_->post("/api/projects/d/software", {{"name", "walker"}, {"text", kFsm}}).status, 200);
+  ASSERT_EQ(alice_->post("/api/projects/d/software", {{"name", "other"}, {"text", kFsm}}).status, 200);
+  const Answer first = alice_->post("/api/projects/d/designs", fsm);
+  ASSERT_EQ(first.status, 200) << first.text;
+  const std::string id = std::to_string(first.body.at("id").get<std::int64_t>());
+  const auto folder = root_ / "home" / "users" / "alice" / "projects" / "d" / "designs" / id;
+  ASSERT_TRUE(std::filesystem::is_directory(folder));
+
+  // Nothing of a running design goes, nor the project holding it.
+  EXPECT_EQ(alice_->post("/api/projects/d/designs/" + id + "/delete", json::object()).status, 409);
+  EXPECT_EQ(alice_->post("/api/projects/d/delete", {{"confirm", "d"}}).status, 409);
+  ASSERT_EQ(alice_->post("/api/projects/d/designs/stop", json::object()).status, 200);
+  ASSERT_TRUE(wait_until([&] { return alice_->get("/api/projects/d/status").body.at("design").at("state") != "running"; },
+                         std::chrono::seconds(120)));
+  const Answer second = alice_->post("/api/projects/d/designs", {{"flavours", "chocolate"}, {"architectures", "fsm"},
+                                                                 {"seed", 4}, {"fresh", true}});
+  ASSERT_EQ(second.status, 200) << second.text;
+  ASSERT_EQ(alice_->post("/api/projects/d/designs/stop", json::object()).status, 200);
+  ASSERT_TRUE(wait_until([&] { return alice_->get("/api/projects/d/status").body.at("design").at("state") != "running"; },
+                         std::chrono::seconds(120)));
+
+  // The earlier design opens by its number, as status --design shows it.
+  const Answer earlier = alice_->get("/api/projects/d/status?design=" + id);
+  ASSERT_EQ(earlier.status, 200) << earlier.text;
+  EXPECT_EQ(earlier.body.at("design").at("id"), first.body.at("id"));
+  EXPECT_EQ(earlier.body.at("design").at("seed"), 3);
+  EXPECT_EQ(alice_->get("/api/projects/d/status").body.at("design").at("id"), second.body.at("id"));
+  EXPECT_EQ(alice_->get("/api/projects/d/status?design=999").status, 404);
+  EXPECT_EQ(alice_->get("/api/projects/d/status?design=x").status, 400);
+  EXPECT_EQ(bob_->get("/api/projects/d/status?design=" + id).status, 404);
+
+  // Bob reaches none of it: every delete is a 404, as for a project that does not exist.
+  EXPECT_EQ(bob_->post("/api/projects/d/designs/" + id + "/delete", json::object()).status, 404);
+  EXPECT_EQ(bob_->post("/api/projects/d/software/walker/delete", json::object()).status, 404);
+  EXPECT_EQ(bob_->post("/api/projects/d/delete", {{"confirm", "d"}}).status, 404);
+  EXPECT_TRUE(std::filesystem::is_directory(folder));
+
+  // Alice deletes one saved program, then one design: the others stay.
+  EXPECT_EQ(alice_->post("/api/projects/d/software/walker/delete", json::object()).status, 200);
+  EXPECT_EQ(alice_->post("/api/projects/d/software/walker/delete", json::object()).status, 404);
+  EXPECT_EQ(alice_->post("/api/projects/d/software/..%2Fmissions/delete", json::object()).status, 404);
+  ASSERT_EQ(alice_->get("/api/projects/d/software").body.size(), 1u);
+  EXPECT_EQ(alice_->get("/api/projects/d/software").body.at(0).at("name"), "other");
+  EXPECT_EQ(alice_->post("/api/projects/d/designs/" + id + "/delete", json::object()).status, 200);
+  EXPECT_FALSE(std::filesystem::exists(folder));
+  EXPECT_EQ(alice_->get("/api/projects/d/designs").body.size(), 1u);
+  EXPECT_EQ(alice_->post("/api/projects/d/designs/" + id + "/delete", json::object()).status, 404);
+
+  // A project goes only when its name is confirmed, and only it.
+  const Answer unconfirmed = alice_->post("/api/projects/d/delete", {{"confirm", "kept"}});
+  EXPECT_EQ(unconfirmed.status, 400);
+  EXPECT_NE(unconfirmed.text.find("confirm with its name"), std::string::npos) << unconfirmed.text;
+  EXPECT_EQ(alice_->post("/api/projects/d/delete", json::object()).status, 400);
+  ASSERT_EQ(alice_->post("/api/projects/d/delete", {{"confirm", "d"}}).status, 200);
+  EXPECT_FALSE(std::filesystem::exists(root_ / "home" / "users" / "alice" / "projects" / "d"));
+  ASSERT_EQ(alice_->get("/api/projects").body.size(), 1u);
+  EXPECT_EQ(alice_->get("/api/projects").body.at(0).at("name"), "kept");
+  EXPECT_EQ(alice_->get("/api/projects/d/status").status, 404);
 }
 
 TEST_F(WebServer, OneUserRunsAtMostTwoDesignsHereAndTheThirdChangesNothing) {

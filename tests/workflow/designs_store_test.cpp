@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <filesystem>
+#include <fstream>
 #include <functional>
+#include <iterator>
 #include <variant>
 
 #include "storage/accounts.hpp"
@@ -126,6 +129,63 @@ TEST_F(workflow_designs, TheListAndTheLatestDesignReportADeadDesignTheSameWay) {
   ASSERT_EQ(designs.list().size(), 1u);
   EXPECT_EQ(designs.list().front().id, killed.id);
   EXPECT_EQ(designs.list().front().state, storage::DesignState::interrupted);
+}
+
+TEST_F(workflow_designs, ADesignIsDeletedWithItsFolderOnlyOnceItNoLongerRuns) {
+  storage::Designs designs(workspace(), project("p"));
+  const auto running = designs.start(request(me()));
+  std::ofstream(running.folder / "design.db") << "race data";
+  EXPECT_THROW(designs.remove(running.id), storage::Conflict);
+  EXPECT_TRUE(std::filesystem::exists(running.folder / "design.db"));
+
+  designs.finish(running.id, "--fsm-config --nstates 1 --s0 0", 1.0);
+  const auto killed = designs.start(request(owner_of(kDeadPid)));  // reads interrupted: deletable
+  designs.remove(running.id);
+  EXPECT_FALSE(std::filesystem::exists(running.folder));
+  ASSERT_EQ(designs.list().size(), 1u);
+  EXPECT_EQ(designs.list().front().id, killed.id);
+  EXPECT_TRUE(std::filesystem::is_directory(killed.folder));
+  designs.remove(killed.id);
+  EXPECT_TRUE(designs.list().empty());
+  // Nothing hidden is left behind either.
+  EXPECT_TRUE(std::filesystem::is_empty(running.folder.parent_path()));
+  EXPECT_THROW(designs.remove(killed.id), storage::NotFound);
+
+  // Another project's design is not found through this project, and stays.
+  storage::Designs other(workspace(), project("q"));
+  const auto theirs = other.start(request(owner_of(kDeadPid)));
+  EXPECT_THROW(designs.remove(theirs.id), storage::NotFound);
+  EXPECT_TRUE(std::filesystem::is_directory(theirs.folder));
+}
+
+TEST_F(workflow_designs, AProjectIsDeletedWholeButNotWhileSomethingOfItRuns) {
+  storage::Projects projects(workspace(), owner());
+  const storage::Project p = project("p");
+  storage::Designs designs(workspace(), p);
+  const auto design = designs.start(request(me()));
+  std::ofstream(p.folder / "notes.txt") << "mine";
+  EXPECT_THROW(projects.remove("p"), storage::Conflict);
+  EXPECT_TRUE(std::filesystem::exists(p.folder / "notes.txt"));
+  designs.release(design.id, me());
+
+  const storage::Project q = project("q");  // the active one now
+  std::ofstream(q.folder / "kept.txt") << "other project";
+  projects.select("p");
+  projects.remove("P");  // names are case-insensitive
+  EXPECT_FALSE(std::filesystem::exists(p.folder));
+  EXPECT_THROW(projects.get("p"), storage::NotFound);
+  EXPECT_EQ(query("SELECT count(*) FROM designs"), "0");
+  EXPECT_FALSE(projects.active().has_value());  // it was the active one
+  EXPECT_TRUE(std::filesystem::exists(q.folder / "kept.txt"));
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(q.folder.parent_path()), {}), 1);
+
+  // The same name makes a new, empty project.
+  EXPECT_TRUE(std::filesystem::is_empty(projects.create("p", std::nullopt).folder));
+
+  // Another user cannot delete it: for them it does not exist.
+  const storage::User bob = storage::create_user(workspace().database(), "bob", "another good password");
+  EXPECT_THROW(storage::Projects(workspace(), bob).remove("q"), storage::NotFound);
+  EXPECT_TRUE(std::filesystem::exists(q.folder / "kept.txt"));
 }
 
 TEST_F(workflow_designs, AnOwnerOnThisMachineLivesAsLongAsItsProcess) {

@@ -82,6 +82,41 @@ TEST_F(run_design, TheWholeWorkflowFromSignUpToATestedDesign) {
   EXPECT_EQ(count_lines_starting(given, "Score "), 2) << given;
 }
 
+TEST_F(run_design, AnEarlierDesignIsShownAndDeletedByItsNumberAndAProjectWhole) {
+  project_with_budget(1100);
+  run_ok({"run-design", "--fsm", "--chocolate", "--seed", "3", "--threads", "2"});
+  run_ok({"run-design", "--fsm", "--chocolate", "--seed", "4", "--threads", "2"});
+  EXPECT_EQ(status()["design"]["id"], 2);
+  const json first = json::parse(run_ok({"status", "--design", "1", "--json"}));
+  EXPECT_EQ(first["design"]["id"], 1);
+  EXPECT_EQ(first["design"]["seed"], 3);
+  EXPECT_EQ(first["progress"]["best"]["configuration"].get<std::string>(), query("SELECT best_config FROM designs WHERE id = 1"));
+  expect_error(run({"status", "--design", "9"}), 1, "has no design 9");
+
+  // Without a terminal to ask on, nothing is deleted unless --yes says so.
+  expect_error(run({"delete-design", "1"}), 2, "confirm with --yes");
+  EXPECT_TRUE(std::filesystem::is_directory(design_folder(1)));
+  EXPECT_NE(run_ok({"delete-design", "1", "--yes"}).find("Deleted design 1."), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(design_folder(1)));
+  EXPECT_TRUE(std::filesystem::is_directory(design_folder(2)));
+  EXPECT_EQ(query("SELECT group_concat(id) FROM designs"), "2");
+  expect_error(run({"delete-design", "1", "--yes"}), 1, "has no design 1");
+  EXPECT_EQ(status()["design"]["id"], 2);
+
+  // Another user's attempt reads as a project that does not exist, and deletes nothing.
+  sign_up("bob", "another good password");
+  sign_in("bob", "another good password");
+  expect_error(run({"delete-project", "swarm", "--yes"}), 1, "no project named 'swarm'");
+  expect_error(run({"delete-design", "2", "--yes", "--project", "swarm"}), 1, "no project named 'swarm'");
+  sign_in("alice", "alice-secret-pw");
+
+  expect_error(run({"delete-project", "swarm"}), 2, "confirm with --yes");
+  EXPECT_NE(run_ok({"delete-project", "swarm", "--yes", "--json"}).find("\"deleted\": \"swarm\""), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(design_folder(2).parent_path().parent_path()));
+  EXPECT_EQ(query("SELECT count(*) FROM designs"), "0");
+  expect_error(run({"status"}), 1, "no active project");
+}
+
 TEST_F(run_design, StatusReadsADetachedDesignWhileItRuns) {
   // Long enough to be still running when the refusals below are tried (race steps now go out
   // in wider batches, and a 4000-run design could end between the status read and them).
