@@ -14,6 +14,7 @@
 #include "control/config_string.hpp"
 #include "design/design_space.hpp"
 #include "statistics/descriptive.hpp"
+#include "statistics/signed_rank.hpp"
 #include "storage/designs.hpp"
 #include "web/http_io.hpp"
 #include "web/routes.hpp"
@@ -48,6 +49,21 @@ app::ProjectDesignRequest design_request(const json& body) {
     request.fresh = body.at("fresh").get<bool>();
   }
   return request;
+}
+
+/// The seeds a page may ask to test on.
+std::vector<std::uint64_t> test_seeds(const std::string& text) {
+  std::vector<std::uint64_t> seeds = app::parse_seed_range(text);
+  if (seeds.size() > kMaxTestSeeds)
+    throw app::InvalidRequest("seeds " + text + ": at most " + std::to_string(kMaxTestSeeds) + " seeds from the page");
+  return seeds;
+}
+
+/// A request holds a server thread: bounded like an Exec run, per simulation.
+void require_page_sized(const Mission& mission, std::size_t runs) {
+  if (static_cast<double>(mission.robots) * mission.ticks * static_cast<double>(runs) > kMaxTestRobotTicks)
+    throw app::InvalidRequest("the mission is too long to test on " + std::to_string(runs) +
+                              " runs from the page: use swarmdesign test-design");
 }
 
 /// A design's number as a route or query gives it.
@@ -128,22 +144,48 @@ void add_project_routes(Routes& routes) {
       design = call.body.at("design").get<std::int64_t>();
     }
     const std::string seeds_text = call.body.contains("seeds") ? text_field(call.body, "seeds") : "1-10";
-    const std::vector<std::uint64_t> seeds = app::parse_seed_range(seeds_text);
-    if (seeds.size() > kMaxTestSeeds)
-      throw app::InvalidRequest("seeds " + seeds_text + ": at most " + std::to_string(kMaxTestSeeds) + " seeds from the page");
+    const std::vector<std::uint64_t> seeds = test_seeds(seeds_text);
     std::optional<ControlSoftware> given;
     if (call.body.contains("text") && !call.body.at("text").is_null()) given = parse_control_software(text_field(call.body, "text"));
     const app::TestTarget target = app::test_target(call.home, call.user, call.match(1), given, design,
                                                     app::FileScope::own_projects(call.home, call.user));
-    // A request holds a server thread: bounded like an Exec run, per seed.
-    if (static_cast<double>(target.mission.robots) * target.mission.ticks * static_cast<double>(seeds.size()) > kMaxTestRobotTicks)
-      throw app::InvalidRequest("the mission is too long to test on " + std::to_string(seeds.size()) +
-                                " seeds from the page: use swarmdesign test-design");
+    require_page_sized(target.mission, seeds.size());
     const std::vector<double> scores = app::score_seeds(target.mission, target.software, seeds);
     json doc = app::scores_document(target.mission, target.software, seeds, scores);
     doc["design"] = target.design_id ? json(*target.design_id) : json();
     if (scores.size() > 1) doc["sd"] = statistics::sample_standard_deviation(scores);
     return doc;
+  });
+
+  // Two designs' bests on the same fresh seeds, with the paired test an experiment's report uses.
+  routes.post(project + "/compare", [](Call& call) -> json {
+    if (!call.body.contains("designs") || !call.body.at("designs").is_array() || call.body.at("designs").size() != 2)
+      throw app::InvalidRequest("designs must be two designs' numbers");
+    const std::string seeds_text = call.body.contains("seeds") ? text_field(call.body, "seeds") : "1-20";
+    const std::vector<std::uint64_t> seeds = test_seeds(seeds_text);
+    json sides = json::array();
+    std::vector<std::vector<double>> scores;
+    for (const json& id : call.body.at("designs")) {
+      if (!id.is_number_integer()) throw app::InvalidRequest("designs must be two designs' numbers");
+      const app::TestTarget target = app::test_target(call.home, call.user, call.match(1), std::nullopt,
+                                                      id.get<std::int64_t>(), app::FileScope::own_projects(call.home, call.user));
+      require_page_sized(target.mission, 2 * seeds.size());
+      scores.push_back(app::score_seeds(target.mission, target.software, seeds));
+      json side = app::scores_document(target.mission, target.software, seeds, scores.back());
+      side["design"] = id;
+      if (seeds.size() > 1) side["sd"] = statistics::sample_standard_deviation(scores.back());
+      sides.push_back(std::move(side));
+    }
+    json test = {{"test", "Wilcoxon signed-rank, paired by seed"}, {"p_value", 1.0}, {"estimate", 0.0}};
+    try {
+      const statistics::SignedRankTest t = statistics::wilcoxon_signed_rank(scores[0], scores[1]);
+      test["p_value"] = t.p_value;
+      test["estimate"] = t.estimate;
+      test["statistic"] = t.statistic;
+    } catch (const std::invalid_argument&) {
+      test["note"] = "every seed scores the same: nothing to tell them apart";
+    }
+    return {{"seeds", seeds_text}, {"designs", sides}, {"wilcoxon", test}};
   });
 
   routes.get(project + "/software", [](Call& call) {

@@ -32,6 +32,7 @@
 #include "core/bounded_file.hpp"
 #include "evaluation/simulation.hpp"
 #include "missions/catalogue.hpp"
+#include "statistics/signed_rank.hpp"
 #include "storage/designs.hpp"
 #include "storage/lease.hpp"
 #include "storage/projects.hpp"
@@ -725,6 +726,46 @@ TEST_F(WebServer, EarlierDesignsOpenAndWhatIsDeletedIsOnlyWhatWasNamedAndOnlyByI
   ASSERT_EQ(alice_->get("/api/projects").body.size(), 1u);
   EXPECT_EQ(alice_->get("/api/projects").body.at(0).at("name"), "kept");
   EXPECT_EQ(alice_->get("/api/projects/d/status").status, 404);
+}
+
+TEST_F(WebServer, TwoFinishedDesignsAreComparedOnTheSameSeedsWithAPairedTest) {
+  alice_project("c", "1100");
+  std::vector<std::int64_t> ids;
+  for (int seed : {3, 4}) {
+    const Answer started = alice_->post("/api/projects/c/designs", {{"flavours", "chocolate"}, {"architectures", "fsm"}, {"seed", seed}});
+    ASSERT_EQ(started.status, 200) << started.text;
+    ids.push_back(started.body.at("id").get<std::int64_t>());
+    ASSERT_TRUE(wait_until([&] { return alice_->get("/api/projects/c/status").body.at("design").at("state") == "finished"; },
+                           std::chrono::seconds(300)));
+  }
+  const Answer compared = alice_->post("/api/projects/c/compare", {{"designs", ids}, {"seeds", "21-30"}});
+  ASSERT_EQ(compared.status, 200) << compared.text;
+  const std::string mission = alice_->get("/api/projects").body.at(0).at("mission");
+  std::vector<std::uint64_t> seeds;
+  for (std::uint64_t s = 21; s <= 30; ++s) seeds.push_back(s);
+  std::vector<std::vector<double>> expected;
+  for (std::size_t side = 0; side < 2; ++side) {
+    const json& d = compared.body.at("designs").at(side);
+    EXPECT_EQ(d.at("design"), ids[side]);
+    const auto rows = alice_->get("/api/projects/c/designs").body;
+    std::string best;
+    for (const json& row : rows)
+      if (row.at("id") == ids[side]) best = row.at("best_configuration");
+    EXPECT_EQ(d.at("control_software"), best);
+    expected.push_back(app::score_seeds(load_mission(mission), parse_control_software(best), seeds));
+    ASSERT_EQ(d.at("runs").size(), 10u);
+    for (std::size_t i = 0; i < 10; ++i) EXPECT_EQ(d.at("runs").at(i).at("score").get<double>(), expected[side][i]);
+  }
+  const json& test = compared.body.at("wilcoxon");
+  if (expected[0] != expected[1]) {
+    EXPECT_DOUBLE_EQ(test.at("p_value").get<double>(), statistics::wilcoxon_signed_rank(expected[0], expected[1]).p_value);
+  } else {
+    EXPECT_TRUE(test.contains("note"));
+  }
+  EXPECT_EQ(bob_->post("/api/projects/c/compare", {{"designs", ids}}).status, 404);
+  EXPECT_EQ(alice_->post("/api/projects/c/compare", {{"designs", {ids[0]}}}).status, 400);
+  EXPECT_EQ(alice_->post("/api/projects/c/compare", {{"designs", {ids[0], 999}}}).status, 404);
+  EXPECT_EQ(alice_->post("/api/projects/c/compare", {{"designs", ids}, {"seeds", "1-500"}}).status, 400);
 }
 
 TEST_F(WebServer, OneUserRunsAtMostTwoDesignsHereAndTheThirdChangesNothing) {
