@@ -71,6 +71,36 @@ test('a malformed string clears the old drawing; a good one brings a drawing bac
   assert.equal(await page.isVisible('#config-error'), false);
 });
 
+test('an error goes once the user moves on; a budget too small for every flavour is warned about', { timeout: 30000 }, async () => {
+  await page.click('#tab-designs');
+  await page.waitForSelector('label[for="project-budget"]');
+  await page.fill('#project-name', 'p1');
+  await page.fill('#project-budget', '500');
+  await page.waitForFunction(() => /^below \d+, the least Iterated F-Race needs/.test(document.getElementById('project-budget-note').textContent));
+  await shot(page, 'low-budget-warned');
+  await page.click('#project-create');
+  await page.waitForSelector('[data-testid="project-p1"]');
+  await page.fill('#project-budget', '200000');
+  assert.equal(await page.textContent('#project-budget-note'), '');
+
+  const refuse = async () => {
+    await page.fill('#project-name', 'p1');
+    await page.click('#project-create');
+    await page.waitForSelector('#toast:not([hidden])');
+    assert.match(await page.textContent('#toast'), /already have a project named 'p1'/);
+  };
+  await refuse();
+  await shot(page, 'error-shown');
+  await page.click('#tab-editor');
+  assert.equal(await page.isHidden('#toast'), true, 'another tab: the error spoke of the one left');
+  await page.click('#tab-designs');
+  await refuse();
+  await page.fill('#project-name', 'p2');
+  await page.click('#project-create');
+  await page.waitForSelector('[data-testid="project-p2"]');
+  assert.equal(await page.isHidden('#toast'), true, 'an action that worked clears the earlier error');
+});
+
 test('the page raised no uncaught error', () => {
   assert.deepEqual(errors, []);
 });

@@ -1,5 +1,5 @@
 // The one fetch wrapper: JSON bodies, the CSRF token on every POST, errors shown to the user.
-import { showError } from './toast.js';
+import { clearError, showError } from './toast.js';
 
 let csrf = null;
 let onUnauthorized = () => {};
@@ -43,5 +43,6 @@ export async function api(path, { method, body, quiet = false } = {}) {
     else if (!quiet) showError(error.message);
     throw error;
   }
+  if (verb !== 'GET' && !quiet) clearError();  // an action that worked: an earlier error is stale
   return data;
 }

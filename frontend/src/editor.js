@@ -8,6 +8,7 @@ import { fsmEditor } from './fsm_editor.js';
 import { btEditor } from './bt_editor.js';
 import { el } from './properties.js';
 import * as sm from './software_model.js';
+import { confirmDelete } from './confirm_dialog.js';
 import { downloadSvg } from './svg_export.js';
 import { showError } from './toast.js';
 
@@ -188,8 +189,16 @@ export function initEditor({ onExec }) {
     if (!projectSelect.value) return;
     const items = await api(`/api/projects/${encodeURIComponent(projectSelect.value)}/software`);
     for (const item of items) {
+      const project = projectSelect.value;
+      const remove = el('button', { type: 'button', class: 'icon', testid: `software-delete-${item.name}`, text: '✕', title: `delete ${item.name}`,
+        onclick: async (e) => {
+          e.stopPropagation();
+          if (!await confirmDelete({ title: `Delete ${item.name}?`, text: `The control software saved as ${item.name} in project ${project} is deleted.` })) return;
+          try { await api(`/api/projects/${encodeURIComponent(project)}/software/${encodeURIComponent(item.name)}/delete`, { body: {} }); } catch { return; }
+          await refreshSoftware();
+        } });
       list.append(el('li', { title: item.text, testid: `software-${item.name}`, onclick: () => { textarea.value = item.text; parseText(item.text); } },
-        el('span', { text: item.name }), el('span', { class: 'muted small', text: 'load' })));
+        el('span', { text: item.name }), el('span', { class: 'muted small' }, 'load', remove)));
     }
     if (!items.length) list.append(el('li', { class: 'muted small', text: 'nothing saved yet' }));
   }

@@ -124,6 +124,7 @@ export function initExec() {
     delete $('final-score').dataset.value;
     $('tick-label').textContent = '';
     $('objective-now').textContent = '';
+    $('export-status').textContent = '';  // "video saved" spoke of the run before
     timeline.max = '0';
     timeline.value = '0';
     delete timeline.dataset.received;

@@ -8,7 +8,7 @@ import { initMissionUpload, renderMissions } from './missions.js';
 import { initMonitor } from './monitor.js';
 import { copyFullScores } from './numbers.js';
 import { showSignIn } from './signin.js';
-import { showError } from './toast.js';
+import { clearError, showError } from './toast.js';
 
 const $ = (id) => document.getElementById(id);
 let started = false;
@@ -16,6 +16,7 @@ let parts = null;
 let missions = [];
 
 function showTab(name) {
+  clearError();  // it spoke of the tab left
   for (const page of document.querySelectorAll('[data-page]')) page.hidden = page.dataset.page !== name;
   for (const tab of document.querySelectorAll('.tab')) tab.classList.toggle('active', tab.dataset.tab === name);
   if (history.replaceState) history.replaceState(null, '', `#${name}`);
@@ -39,6 +40,8 @@ async function startApp(user) {
     missions: () => missions,
     onWatch: (text, mission) => { showTab('exec'); exec.prepare({ text, mission, seed: 1, go: true }); },
     onEdit: (text) => { showTab('editor'); editor.load(text); },
+    // A deleted project's uploaded missions go with it.
+    onProjectsChanged: async () => { showMissions(await api('/api/missions')); editor.refreshProjects(); },
   });
   const showMissions = (list) => {
     missions = list;

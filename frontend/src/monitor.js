@@ -9,11 +9,13 @@ import { shortName } from './missions.js';
 import { scoreSpan } from './numbers.js';
 import { linePlot } from './plot.js';
 import { el } from './properties.js';
-import { initSeedTest } from './seed_test.js';
+import { boxPlot, initSeedTest } from './seed_test.js';
+import { confirmDelete } from './confirm_dialog.js';
+import { readable } from './numbers.js';
 
 const $ = (id) => document.getElementById(id);
 
-export function initMonitor({ onWatch, onEdit, missions }) {
+export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () => {} }) {
   let selected = null;
   let projectBudgets = new Map();
   let listed = null;  // {id, state} of the newest row of the design list as last drawn
@@ -24,6 +26,8 @@ export function initMonitor({ onWatch, onEdit, missions }) {
   let plot = null;
   let visible = false;
   let fastUntil = 0;
+  let opened = null;  // an earlier design shown instead of the latest (its id), or null
+  const comparing = new Set();  // ids of the designs ticked for comparison
   const graph = createGraph($('best-graph'), { readOnly: true });
   const form = initDesignForm(getCatalogue());
 
@@ -46,10 +50,14 @@ export function initMonitor({ onWatch, onEdit, missions }) {
 
   function select(name) {
     selected = name;
+    opened = null;
+    comparing.clear();
+    $('compare-result').replaceChildren();
     status = null;
     bestDrawn = null;
     listed = null;
     $('monitor-project').textContent = name;
+    $('project-delete').disabled = false;
     form.setBudget(projectBudgets.get(name));
     for (const li of $('project-list').children) li.classList.toggle('selected', li.dataset.testid === `project-${name}`);
     graph.elements().remove();
@@ -67,11 +75,80 @@ export function initMonitor({ onWatch, onEdit, missions }) {
     if (!selected) return;
     const rows = await api(`/api/projects/${encodeURIComponent(selected)}/designs`).catch(() => []);
     listed = rows.length ? { id: rows[0].id, state: rows[0].state } : null;
-    $('design-list').replaceChildren(...rows.map((d) => el('li', { testid: `design-${d.id}`, class: 'design-row', title: d.folder },
-      el('span', { class: 'design-head', text: `#${d.id} ${d.state}` }),
-      el('span', { class: 'muted', text: startedWith(d), title: d.mission || '' }),
-      d.best_score !== null && d.best_score !== undefined ? scoreSpan(el, d.best_score, { class: 'muted' }) : '')));
+    for (const id of [...comparing]) if (!rows.some((d) => d.id === id && d.best_configuration)) comparing.delete(id);
+    if (opened !== null && !rows.some((d) => d.id === opened)) opened = null;
+    $('design-list').replaceChildren(...rows.map((d) => designRow(d, d === rows[0])));
     if (!rows.length) $('design-list').append(el('li', { class: 'muted small', text: 'no design yet' }));
+    updateCompareButton();
+  }
+
+  /// One design: click to open it (the latest is the one shown by default); tick two finished
+  /// ones to compare them; delete one that does not run.
+  function designRow(d, latest) {
+    const shown = opened === null ? latest : opened === d.id;
+    const tick = el('input', { type: 'checkbox', testid: `compare-${d.id}`, title: 'compare this design\'s best with another one\'s',
+      onclick: (e) => e.stopPropagation(),
+      onchange: (e) => { if (e.target.checked) comparing.add(d.id); else comparing.delete(d.id); updateCompareButton(); } });
+    tick.checked = comparing.has(d.id);
+    tick.disabled = !d.best_configuration;
+    const remove = el('button', { type: 'button', class: 'icon', testid: `design-delete-${d.id}`, text: '✕',
+      title: d.state === 'running' ? 'a running design cannot be deleted: stop it first' : `delete design #${d.id}`,
+      onclick: (e) => { e.stopPropagation(); deleteDesign(d); } });
+    remove.disabled = d.state === 'running';
+    return el('li', { testid: `design-${d.id}`, class: `design-row${shown ? ' opened' : ''}`, title: d.folder,
+      onclick: () => openDesign(latest ? null : d.id) },
+      el('span', { class: 'design-actions' }, el('span', { class: 'design-head', text: `#${d.id} ${d.state}` }),
+        el('span', { class: 'spacer' }), el('label', { class: 'inline small' }, tick, 'compare'), remove),
+      el('span', { class: 'muted', text: startedWith(d), title: d.mission || '' }),
+      d.best_score !== null && d.best_score !== undefined ? scoreSpan(el, d.best_score, { class: 'muted' }) : '');
+  }
+
+  function openDesign(id) {
+    opened = id;
+    bestDrawn = null;
+    graph.elements().remove();
+    $('test-result').replaceChildren();
+    for (const li of $('design-list').children) li.classList.toggle('opened', li.dataset.testid === `design-${id ?? (listed && listed.id)}`);
+    poll();
+  }
+
+  async function deleteDesign(d) {
+    const project = selected;
+    const yes = await confirmDelete({ title: `Delete design #${d.id}?`,
+      text: `Its race data and best control software (${startedWith(d)}) are deleted. Other designs, experiments and saved software stay.` });
+    if (!yes) return;
+    try { await api(`/api/projects/${encodeURIComponent(project)}/designs/${d.id}/delete`, { body: {} }); } catch { return; }
+    comparing.delete(d.id);
+    if (opened === d.id) opened = null;
+    await refreshDesigns();
+    poll();
+  }
+
+  function updateCompareButton() {
+    $('compare-run').disabled = comparing.size !== 2;
+    $('compare-run').textContent = comparing.size === 2 ? `Compare #${[...comparing].join(' and #')}` : 'Compare two ticked designs';
+  }
+
+  /// The two ticked designs' bests on the same seeds: each one's box plot and the paired test.
+  async function compare() {
+    const ids = [...comparing].sort((a, b) => a - b);
+    const seeds = $('compare-seeds').value.trim();
+    const out = $('compare-result');
+    out.replaceChildren(document.createTextNode(`scoring #${ids.join(' and #')} on seeds ${seeds}…`));
+    try {
+      const answer = await api(`/api/projects/${encodeURIComponent(selected)}/compare`, { body: { designs: ids, seeds }, quiet: true });
+      const w = answer.wilcoxon;
+      const verdict = w.note ? w.note
+        : `paired Wilcoxon p = ${readable(w.p_value)}${w.p_value < 0.05 ? ` — #${w.estimate > 0 ? ids[0] : ids[1]} scores ${w.estimate > 0 ? 'higher' : 'lower'} (median difference ${readable(w.estimate)})` : ' — no difference at 5 %'}`;
+      // One scale for both, so the boxes compare by eye.
+      const all = answer.designs.flatMap((d) => d.runs.map((r) => r.score));
+      const range = [Math.min(...all), Math.max(...all)];
+      out.replaceChildren(...answer.designs.map((d) => el('div', { class: 'compare-side', testid: `compare-side-${d.design}` },
+        el('span', { text: `#${d.design}: mean ${readable(d.mean)} · sd ${readable(d.sd)}` }), boxPlot(d.runs, 200, 48, range))),
+      el('div', { testid: 'compare-verdict', text: `${verdict} (seeds ${answer.seeds})` }));
+    } catch (e) {
+      out.replaceChildren(el('div', { class: 'error', text: e.message }));
+    }
   }
 
   /// The project's experiments (swarmdesign experiment): progress and a link to the report page.
@@ -127,11 +204,15 @@ export function initMonitor({ onWatch, onEdit, missions }) {
     const reason = spent ? '' : progress.finish_reason ? ` · ${progress.finish_reason}` : '';
     $('design-state').textContent = `${spent ? 'finished: budget spent' : design.state}${s.running_here ? ' (here)' : ''}${slurm}${reason}`;
     $('design-state').title = progress.finish_reason ? `finished because: ${progress.finish_reason}` : '';
-    $('design-start').disabled = design.state === 'running';
-    $('design-stop').disabled = design.state !== 'running';
-    showResumable(design);
+    // Start and Stop act on the project's latest design, whichever is shown.
+    const latestState = opened === null ? design.state : listed && listed.state;
+    $('design-start').disabled = latestState === 'running';
+    $('design-stop').disabled = latestState !== 'running';
+    showResumable(opened === null ? design : null);
 
-    $('design-info').textContent = `Design #${design.id}: ${startedWith(design)}`;
+    $('design-info').replaceChildren(...(opened === null ? [] : [el('span', { class: 'opened-note', testid: 'opened-note' },
+      `Showing earlier design #${design.id}. `, el('button', { type: 'button', class: 'link', testid: 'show-latest', text: 'show the latest', onclick: () => openDesign(null) }))]),
+    document.createTextNode(`Design #${design.id}: ${startedWith(design)}`));
     $('design-info').title = design.mission || '';
     renderElites(progress.elites || []);
     // Convergence: the best elite's mean over all its runs at the end of each iteration.
@@ -192,19 +273,36 @@ export function initMonitor({ onWatch, onEdit, missions }) {
     const name = selected;
     let running = false;
     try {
-      const s = await api(`/api/projects/${encodeURIComponent(name)}/status`, { quiet: true });
-      if (name !== selected) return;
+      const wanted = opened;
+      const query = wanted === null ? '' : `?design=${wanted}`;
+      const s = await api(`/api/projects/${encodeURIComponent(name)}/status${query}`, { quiet: true });
+      if (name !== selected || wanted !== opened) return;
       const was = status && status.design && status.design.state;
       status = s;
       renderStatus(s);
       running = !!(s.design && s.design.state === 'running') || (s.experiments || []).some((e) => e.state === 'running');
-      const stale = s.design ? !listed || listed.id !== s.design.id || listed.state !== s.design.state : listed !== null;
+      const stale = opened !== null ? false
+        : s.design ? !listed || listed.id !== s.design.id || listed.state !== s.design.state : listed !== null;
       if (stale || (s.design && was && was !== s.design.state)) refreshDesigns();
     } catch (e) {
       $('design-state').textContent = e.message;
     }
     if (visible || running) timer = setTimeout(poll, running || Date.now() < fastUntil ? 1000 : 5000);
   }
+
+  // A project's budget below Iterated F-Race's least for the default space (every flavour, both
+  // architectures) can still design in a smaller space: a warning, not a refusal.
+  let leastBudget = null;
+  api('/api/design-space', { quiet: true }).then((space) => { leastBudget = space.minimum_budget; budgetNote(); }).catch(() => {});
+  function budgetNote() {
+    const budget = Number($('project-budget').value);
+    const low = leastBudget !== null && budget > 0 && budget < leastBudget;
+    $('project-budget-note').textContent = low
+      ? `below ${leastBudget}, the least Iterated F-Race needs for every flavour and both architectures: only a smaller design space fits`
+      : '';
+    $('project-budget-note').classList.toggle('warning', low);
+  }
+  $('project-budget').addEventListener('input', budgetNote);
 
   $('project-form').addEventListener('submit', async (e) => {
     e.preventDefault();
@@ -242,6 +340,23 @@ export function initMonitor({ onWatch, onEdit, missions }) {
     poll();
   });
   initSeedTest(() => testTarget);
+  $('compare-form').addEventListener('submit', (e) => { e.preventDefault(); if (comparing.size === 2) compare(); });
+  $('project-delete').addEventListener('click', async () => {
+    const name = selected;
+    if (!name) return;
+    const yes = await confirmDelete({ title: `Delete project ${name}?`, typeToConfirm: name,
+      text: 'Its designs, experiments, reports, uploaded missions and saved control software are deleted for good. Your other projects stay.' });
+    if (!yes) return;
+    try { await api(`/api/projects/${encodeURIComponent(name)}/delete`, { body: { confirm: name } }); } catch { return; }
+    selected = null;
+    $('monitor-project').textContent = 'no project selected';
+    $('project-delete').disabled = true;
+    $('design-list').replaceChildren();
+    $('compare-result').replaceChildren();
+    const left = await refreshProjects();
+    if (!left.length) renderStatus({});
+    onProjectsChanged();
+  });
   $('watch-best').addEventListener('click', () => {
     const b = $('watch-best');
     if (b.dataset.text) onWatch(b.dataset.text, b.dataset.mission);

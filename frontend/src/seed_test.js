@@ -19,18 +19,20 @@ function quantile(sorted, q) {
   return sorted[lo] + (sorted[Math.min(lo + 1, sorted.length - 1)] - sorted[lo]) * (at - lo);
 }
 
-/// A horizontal box plot of `runs` ([{seed, score}]) as an SVG element.
-export function boxPlot(runs, width = 260, height = 56) {
+/// A horizontal box plot of `runs` ([{seed, score}]) as an SVG element. `range` ([lo, hi]) puts
+/// several plots on one scale, so that they can be compared by eye.
+export function boxPlot(runs, width = 260, height = 56, range = null) {
   const scores = runs.map((r) => r.score).sort((a, b) => a - b);
-  const lo = scores[0], hi = scores[scores.length - 1];
+  const [lo, hi] = range || [scores[0], scores[scores.length - 1]];
   const pad = 10;
   const x = (v) => (hi === lo ? width / 2 : pad + ((v - lo) / (hi - lo)) * (width - 2 * pad));
   const root = svg('svg', { width, height, viewBox: `0 0 ${width} ${height}`, class: 'box-plot', role: 'img',
     'aria-label': `box plot of ${runs.length} scores from ${readable(lo)} to ${readable(hi)}` });
   const mid = 22;
   const [q1, med, q3] = [0.25, 0.5, 0.75].map((q) => quantile(scores, q));
-  root.append(svg('line', { x1: x(lo), x2: x(hi), y1: mid, y2: mid, class: 'whisker' }));
-  for (const v of [lo, hi]) root.append(svg('line', { x1: x(v), x2: x(v), y1: mid - 6, y2: mid + 6, class: 'whisker' }));
+  root.append(svg('line', { x1: x(scores[0]), x2: x(scores[scores.length - 1]), y1: mid, y2: mid, class: 'whisker' }));
+  const [least, most] = [scores[0], scores[scores.length - 1]];
+  for (const v of [least, most]) root.append(svg('line', { x1: x(v), x2: x(v), y1: mid - 6, y2: mid + 6, class: 'whisker' }));
   root.append(svg('rect', { x: x(q1), y: mid - 10, width: Math.max(1, x(q3) - x(q1)), height: 20, class: 'box' }));
   root.append(svg('line', { x1: x(med), x2: x(med), y1: mid - 10, y2: mid + 10, class: 'median' }));
   runs.forEach((r, i) => {
