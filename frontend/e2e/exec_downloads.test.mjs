@@ -78,6 +78,17 @@ test('the frame downloads as PNG at the chosen height and as SVG with every robo
   assert.match(svg, /tick 600 \/ 1200/);
 });
 
+test('at 1280×800 the arena, the timeline and the whole objective plot fit in the window', { timeout: 30000 }, async () => {
+  await page.waitForSelector('#objective-plot svg, #objective-plot canvas');
+  for (const id of ['#viewer', '#timeline', '#objective-plot']) {
+    const box = await page.locator(id).boundingBox();
+    assert.ok(box && box.height > 0, id);
+    assert.ok(box.y + box.height <= 800, `${id} ends at ${box.y + box.height} px, below the window`);
+  }
+  assert.ok((await page.locator('#viewer').boundingBox()).width >= 360, 'the arena stays large enough to read');
+  await shot(page, 'exec-1280x800');
+});
+
 test('the page raised no uncaught error', () => {
   assert.deepEqual(errors, []);
 });
