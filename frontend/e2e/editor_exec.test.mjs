@@ -27,12 +27,13 @@ after(async () => {
 });
 
 const nodeCount = () => page.evaluate(() => window.__sd.editor.cy.nodes().length);
-// The transitions whose labels' boxes overlap, as "t0_0/t1_0" (the two transitions between
-// S0 and S1 bend apart; their labels must not cover each other).
+// The transitions whose labels' boxes overlap one another or a state, as "t0_0/t1_0" (the two
+// transitions between S0 and S1 bend apart; their labels must not cover each other).
 const overlappingLabels = (graph) => page.evaluate((graph) => {
   const cy = graph === 'exec' ? window.__sd.exec.graph : window.__sd.editor.cy;
   const only = { includeNodes: false, includeEdges: false, includeLabels: true, includeOverlays: false, includeUnderlays: false };
-  const boxes = cy.edges('[kind = "transition"]').map((e) => ({ id: e.id(), b: e.boundingBox(only) }));
+  const boxes = cy.edges('[kind = "transition"]').map((e) => ({ id: e.id(), b: e.boundingBox(only) }))
+    .concat(cy.nodes().map((n) => ({ id: n.id(), b: n.boundingBox({ includeLabels: false, includeOverlays: false }) })));
   const found = [];
   for (let i = 0; i < boxes.length; i++)
     for (let j = i + 1; j < boxes.length; j++) {
@@ -167,6 +168,22 @@ test('Exec AAC with seed 3: robots move and the final score equals evaluate', { 
   const total = await page.evaluate(() => window.__sd.exec.run && window.__sd.execCounts());
   assert.equal(total, 20, 'the state badges count every robot');
   await shot(page, 'exec-final');
+});
+
+test('five transitions between two states keep every label readable, wide and narrow', { timeout: 30000 }, async () => {
+  const dense = '--fsm-config --nstates 2 --s0 14 --att0 4.76 --n0 3 --n0x0 0 --c0x0 11 --p0x0 0.27 --n0x1 0 --c0x1 15 --p0x1 0.5 '
+    + '--n0x2 0 --c0x2 13 --p0x2 5 --w0x2 6.26 --s1 13 --n1 2 --n1x0 0 --c1x0 10 --p1x0 0.78 --n1x1 0 --c1x1 14 --p1x1 6 --w1x1 14.36';
+  await page.click('#tab-editor');
+  await page.evaluate((t) => window.__sd.editor.load(t), dense);
+  await page.waitForFunction(() => window.__sd.editor.cy.edges('[kind = "transition"]').length === 5);
+  assert.deepEqual(await overlappingLabels('editor'), [], 'editor');
+  await shot(page, 'dense-fsm-editor');
+  // The narrow drawing beside Exec (top to bottom) too.
+  await page.click('#tab-exec');
+  await page.evaluate((t) => window.__sd.exec.prepare({ text: t, mission: 'aac', seed: 1, go: true }), dense);
+  await page.waitForFunction(() => window.__sd.exec.graph.edges('[kind = "transition"]').length === 5);
+  await shot(page, 'dense-fsm-exec');
+  assert.deepEqual(await overlappingLabels('exec'), [], 'exec');
 });
 
 test('the page raised no uncaught error', () => {

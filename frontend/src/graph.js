@@ -163,6 +163,58 @@ function placeEdgeLabels(edges) {
     }
     if (e.data('lx') !== lx || e.data('ly') !== ly) e.data({ lx, ly });
   });
+  if (edges.length) separateLabels(edges.cy().edges('[kind = "transition"]'));
+}
+
+/// Three or more transitions between two states (or labels of different pairs that meet) can
+/// still cover one another, or slip under a state's box: overlapping label boxes are pushed
+/// apart, and out from under states (which stay put), along the axis where they overlap least,
+/// a few rounds until none overlap. Cheap: a design has a few dozen labels.
+function separateLabels(edges) {
+  const states = edges.cy().nodes().map((n) => n.boundingBox({ includeLabels: false, includeOverlays: false }));
+  const only = { includeNodes: false, includeEdges: false, includeLabels: true, includeOverlays: false, includeUnderlays: false };
+  const boxes = edges.map((e) => {
+    // The label as drawn when it has been (font metrics), else as estimated.
+    const drawn = e.boundingBox(only);
+    const { w, h } = drawn.w > 0 ? drawn : edgeLabelBox(e.data('label'));
+    const m = e.midpoint();
+    // Out from under a state, a label moves across its chord (never towards the states it joins).
+    const src = e.sourceEndpoint(), dst = e.targetEndpoint();
+    const len = Math.hypot(dst.x - src.x, dst.y - src.y);
+    const nx = len > 1 ? -(dst.y - src.y) / len : 0, ny = len > 1 ? (dst.x - src.x) / len : 0;
+    return { e, w, h, mx: m.x, my: m.y, lx: e.data('lx') || 0, ly: e.data('ly') || 0, nx, ny, cx: (src.x + dst.x) / 2, cy: (src.y + dst.y) / 2 };
+  });
+  const gap = 2;
+  for (let round = 0; round < 200; round++) {
+    let moved = false;
+    for (let i = 0; i < boxes.length; i++)
+      for (let j = i + 1; j < boxes.length; j++) {
+        const a = boxes[i], b = boxes[j];
+        const dx = (b.mx + b.lx) - (a.mx + a.lx), dy = (b.my + b.ly) - (a.my + a.ly);
+        const ox = (a.w + b.w) / 2 + gap - Math.abs(dx), oy = (a.h + b.h) / 2 + gap - Math.abs(dy);
+        if (ox <= 0 || oy <= 0) continue;
+        moved = true;
+        // Equal centres: split by index, so the result never depends on floating-point chance.
+        if (oy <= ox) { const s = (dy > 0 || (dy === 0 && i < j) ? 1 : -1) * oy / 2; a.ly -= s; b.ly += s; }
+        else { const s = (dx > 0 || (dx === 0 && i < j) ? 1 : -1) * ox / 2; a.lx -= s; b.lx += s; }
+      }
+    for (const a of boxes)
+      for (const n of states) {
+        const dx = (a.mx + a.lx) - (n.x1 + n.x2) / 2, dy = (a.my + a.ly) - (n.y1 + n.y2) / 2;
+        const ox = (a.w + n.w) / 2 + gap - Math.abs(dx), oy = (a.h + n.h) / 2 + gap - Math.abs(dy);
+        if (ox <= 0 || oy <= 0) continue;
+        moved = true;
+        if (a.nx === 0 && a.ny === 0) {  // a self-loop: straight out
+          if (oy <= ox) a.ly += (dy >= 0 ? 1 : -1) * oy; else a.lx += (dx >= 0 ? 1 : -1) * ox;
+          continue;
+        }
+        const side = (a.mx + a.lx - a.cx) * a.nx + (a.my + a.ly - a.cy) * a.ny >= 0 ? 1 : -1;
+        a.lx += side * a.nx * 4;
+        a.ly += side * a.ny * 4;
+      }
+    if (!moved) break;
+  }
+  for (const b of boxes) if (b.e.data('lx') !== b.lx || b.e.data('ly') !== b.ly) b.e.data({ lx: b.lx, ly: b.ly });
 }
 
 function layoutOptions(cy, model) {
@@ -220,14 +272,19 @@ export function layout(cy, model) {
 
 /// counts: array indexed by state / node index, or null to hide the badges.
 export function setCounts(cy, counts) {
+  let resized = false;  // a count line came or went: the boxes changed size
   cy.batch(() => {
     cy.nodes().forEach((n) => {
       const index = n.data('index');
-      if (!counts) { n.removeData('count'); n.removeClass('busy'); return; }
+      const had = n.data('count') !== undefined;
+      if (!counts) { n.removeData('count'); n.removeClass('busy'); resized ||= had; return; }
       const c = counts[index] || 0;
-      if (n.data('kind') === 'btnode' && !(n.data('type') === 'action' || c > 0)) { n.removeData('count'); n.removeClass('busy'); return; }
+      if (n.data('kind') === 'btnode' && !(n.data('type') === 'action' || c > 0)) { n.removeData('count'); n.removeClass('busy'); resized ||= had; return; }
       if (n.data('count') !== c) n.data('count', c);
+      resized ||= !had;
       n.toggleClass('busy', c > 0);
     });
   });
+  // Labels were kept clear of the boxes as they were; every frame otherwise costs nothing here.
+  if (resized) placeEdgeLabels(cy.edges());
 }
