@@ -12,6 +12,7 @@ import { el } from './properties.js';
 import { boxPlot, initSeedTest } from './seed_test.js';
 import { confirmDelete } from './confirm_dialog.js';
 import { readable } from './numbers.js';
+import { download } from './download.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -181,8 +182,9 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
       if (plot) plot.setData([], []);
       showConvergence(false);
       $('best-score').textContent = 'no configuration yet';
-      for (const id of ['watch-best', 'edit-best', 'test-run']) $(id).disabled = true;
+      for (const id of ['watch-best', 'edit-best', 'test-run', 'argos-best']) $(id).disabled = true;
       testTarget = null;
+      $('argos-result').replaceChildren();
       $('design-start').disabled = false;
       $('design-stop').disabled = true;
       showResumable(null);
@@ -227,8 +229,10 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
     $('best-score').replaceChildren(...(best
       ? [document.createTextNode('mean score '), scoreSpan(el, score, { testid: 'best-mean' }), document.createTextNode(`${runs} (${directionOf(design.mission)})`)]
       : [document.createTextNode('no configuration yet')]));
+    if (!testTarget || testTarget.text !== best) $('argos-result').replaceChildren();
     testTarget = best ? { project: selected, text: best } : null;
     $('test-run').disabled = !best;
+    $('argos-best').disabled = !best;
     for (const id of ['watch-best', 'edit-best']) {
       $(id).disabled = !best;
       $(id).dataset.text = best || '';
@@ -356,6 +360,25 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
     const left = await refreshProjects();
     if (!left.length) renderStatus({});
     onProjectsChanged();
+  });
+  // The best shown, for ARGoS3-AutoMoDe: the mission's .argos file downloads, and the command
+  // line that runs it (the string its flavour's code base reads) is shown to copy.
+  $('argos-best').addEventListener('click', async () => {
+    const target = testTarget;
+    if (!target) return;
+    const out = $('argos-result');
+    try {
+      const a = await api(`/api/projects/${encodeURIComponent(target.project)}/argos`, { body: { text: target.text }, quiet: true });
+      download(new Blob([a.experiment], { type: 'application/xml' }), a.file_name);
+      out.replaceChildren(
+        el('div', { text: `${a.file_name} saved (set its library paths: ${a.loop_functions_dir}, ${a.automode_library}).` }),
+        ...(a.command
+          ? [el('div', { text: `Run it with ${a.argos.reader}:` }), el('code', { class: 'argos-command', testid: 'argos-command', text: a.command })]
+          : [el('div', { class: 'error', testid: 'argos-refused', text: `No ARGoS3-AutoMoDe code base reads this control software: ${a.argos.refused}` })]),
+        ...a.notes.map((n) => el('div', { class: 'muted', text: n })));
+    } catch (e) {
+      out.replaceChildren(el('div', { class: 'error', text: e.message }));
+    }
   });
   $('watch-best').addEventListener('click', () => {
     const b = $('watch-best');

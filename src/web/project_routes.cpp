@@ -7,6 +7,7 @@
 #include "app/errors.hpp"
 #include "app/evaluation_job.hpp"
 #include "app/experiment_job.hpp"
+#include "app/export_argos.hpp"
 #include "app/inputs.hpp"
 #include "app/project_design.hpp"
 #include "app/projects.hpp"
@@ -186,6 +187,40 @@ void add_project_routes(Routes& routes) {
       test["note"] = "every seed scores the same: nothing to tell them apart";
     }
     return {{"seeds", seeds_text}, {"designs", sides}, {"wilcoxon", test}};
+  });
+
+  // A design's best for ARGoS3-AutoMoDe, as `export --argos` and `mission export-argos` give it:
+  // the project's mission as an experiment file and the one-digit string its code base reads.
+  // The control software sent (the best the page shows), else design ID's best, as for /test.
+  routes.post(project + "/argos", [](Call& call) -> json {
+    std::optional<std::int64_t> design;
+    if (call.body.contains("design") && !call.body.at("design").is_null()) {
+      if (!call.body.at("design").is_number_integer()) throw app::InvalidRequest("design must be a design's number");
+      design = call.body.at("design").get<std::int64_t>();
+    }
+    std::optional<ControlSoftware> given;
+    if (call.body.contains("text") && !call.body.at("text").is_null()) given = parse_control_software(text_field(call.body, "text"));
+    const app::TestTarget target = app::test_target(call.home, call.user, call.match(1), given, design,
+                                                    app::FileScope::own_projects(call.home, call.user));
+    argos::ExperimentOptions options;
+    if (target.software.architecture == Architecture::BehaviourTree) options.controller_tag = "automode_controller_bt";
+    const argos::Experiment experiment = argos::argos_experiment(target.mission, options);
+    const app::ArgosExportLine line = app::try_export_control_software(target.software);
+    const std::string file = target.mission.name + ".argos";
+    json doc = {{"design", target.design_id ? json(*target.design_id) : json()},
+                {"control_software", target.configuration},
+                {"argos", app::argos_export_document(line)},
+                {"file_name", file},
+                {"experiment", experiment.xml},
+                {"notes", experiment.notes},
+                {"loop_functions_dir", options.loop_functions_dir},
+                {"automode_library", options.automode_library}};
+    // As the file's own comment says: no visualisation, a seed, the control software last.
+    if (line.exported) {
+      const bool bt = line.result.reader.find("automode_main_bt") != std::string::npos;
+      doc["command"] = std::string(bt ? "automode_main_bt" : "automode_main") + " -n -c " + file + " --seed 1 " + line.result.text;
+    }
+    return doc;
   });
 
   routes.get(project + "/software", [](Call& call) {

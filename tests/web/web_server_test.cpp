@@ -31,6 +31,8 @@
 #include "control/config_string.hpp"
 #include "core/bounded_file.hpp"
 #include "evaluation/simulation.hpp"
+#include "export/argos_experiment.hpp"
+#include "export/legacy_string.hpp"
 #include "missions/catalogue.hpp"
 #include "statistics/signed_rank.hpp"
 #include "storage/designs.hpp"
@@ -766,6 +768,19 @@ TEST_F(WebServer, TwoFinishedDesignsAreComparedOnTheSameSeedsWithAPairedTest) {
   EXPECT_EQ(alice_->post("/api/projects/c/compare", {{"designs", {ids[0]}}}).status, 400);
   EXPECT_EQ(alice_->post("/api/projects/c/compare", {{"designs", {ids[0], 999}}}).status, 404);
   EXPECT_EQ(alice_->post("/api/projects/c/compare", {{"designs", ids}, {"seeds", "1-500"}}).status, 400);
+
+  // Either one goes to ARGoS as `mission export-argos` and `export --argos` give it.
+  const Answer exported = alice_->post("/api/projects/c/argos", {{"design", ids[0]}});
+  ASSERT_EQ(exported.status, 200) << exported.text;
+  const Mission loaded = load_mission(mission);
+  EXPECT_EQ(exported.body.at("experiment"), argos::argos_experiment(loaded).xml);
+  EXPECT_EQ(exported.body.at("file_name"), loaded.name + ".argos");
+  const std::string best0 = compared.body.at("designs").at(0).at("control_software");
+  const argos::LegacyString legacy = argos::to_legacy_string(parse_control_software(best0));
+  EXPECT_EQ(exported.body.at("argos").at("config"), legacy.text);
+  EXPECT_EQ(exported.body.at("command"), "automode_main -n -c " + loaded.name + ".argos --seed 1 " + legacy.text);
+  EXPECT_EQ(bob_->post("/api/projects/c/argos", {{"design", ids[0]}}).status, 404);
+  EXPECT_EQ(alice_->post("/api/projects/c/argos", {{"design", 999}}).status, 404);
 }
 
 TEST_F(WebServer, OneUserRunsAtMostTwoDesignsHereAndTheThirdChangesNothing) {
