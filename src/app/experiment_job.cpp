@@ -240,12 +240,19 @@ std::vector<ExperimentProgress> experiments_progress(Home& home, const storage::
     for (const auto& experiment : store.list()) refresh_cluster_experiment(home, p, experiment);
   std::vector<ExperimentProgress> all;
   for (const auto& experiment : store.list()) {
-    ExperimentProgress progress{experiment, 0, 0, std::nullopt};
+    ExperimentProgress progress{experiment, 0, 0, std::nullopt, std::nullopt};
     for (const auto& d : store.designs(experiment.id)) {
       ++progress.designs;
       if (d.stage == storage::DesignStage::done) ++progress.designs_done;
       else if (!progress.current) progress.current = d;
     }
+    // The design being made, followed as `status` follows a design: its race's runs and best.
+    if (progress.current && progress.current->stage == storage::DesignStage::designing) try {
+        if (std::filesystem::exists(storage::DesignStore::file_in(progress.current->folder)))
+          progress.current_race = storage::read_design_progress(progress.current->folder);
+      } catch (const storage::DesignFolderError&) {
+        // Not committed yet, or an EvoStick design (no race): shown without.
+      }
     all.push_back(std::move(progress));
   }
   return all;

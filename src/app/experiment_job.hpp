@@ -21,6 +21,7 @@
 #include "app/documents/experiments.hpp"
 #include "app/home.hpp"
 #include "experiments/protocol.hpp"
+#include "storage/design_status.hpp"
 #include "storage/experiments.hpp"
 #include "storage/projects.hpp"
 
@@ -122,6 +123,7 @@ struct ExperimentProgress {
   storage::Experiment experiment;
   int designs = 0, designs_done = 0;
   std::optional<storage::ExperimentDesign> current;  // the design being made (or last stopped)
+  std::optional<storage::DesignProgress> current_race;  // its race so far, once it has one
 };
 std::vector<ExperimentProgress> experiments_progress(Home& home, const storage::User& user,
                                                      const std::optional<std::string>& project = std::nullopt);

@@ -1,18 +1,127 @@
-// A project's experiments: their progress (the Designs tab lists them) and their report, the
-// same page `swarmdesign report` writes, made afresh from the database at every request.
-#include "app/experiment_job.hpp"
+// A project's experiments: started, stopped and resumed from the page (run on this server's
+// threads), their progress (the Designs tab lists them) and their report, the same page
+// `swarmdesign report` writes, made afresh from the database at every request.
+#include "app/documents/experiments.hpp"
 #include "app/errors.hpp"
+#include "app/experiment_job.hpp"
+#include "app/inputs.hpp"
+#include "app/user_files.hpp"
+#include "experiments/protocol.hpp"
+#include "storage/experiments.hpp"
+#include "storage/projects.hpp"
 #include "app/experiment_report.hpp"
 #include "web/http_io.hpp"
 #include "web/routes.hpp"
 
 namespace sd::web {
 
+namespace {
+
+using nlohmann::json;
+
+/// The protocol a request asks for: a built-in one by name, or the user's own (its JSON text),
+/// with the choices the CLI's flags give. InvalidRequest naming the field at fault.
+experiments::Protocol requested_protocol(const json& body) {
+  try {
+    experiments::Protocol protocol;
+    if (body.contains("text") && !body.at("text").is_null()) {
+      protocol = experiments::parse_protocol_text(text_field(body, "text"), "protocol");
+    } else {
+      const std::string name = body.contains("protocol") ? text_field(body, "protocol") : "";
+      bool evostick = false;
+      if (body.contains("evostick") && !body.at("evostick").is_null()) {
+        if (!body.at("evostick").is_boolean()) throw app::InvalidRequest("evostick must be true or false");
+        evostick = body.at("evostick").get<bool>();
+      }
+      protocol = experiments::builtin_protocol(name, evostick);
+    }
+    experiments::ProtocolOverrides o;
+    if (body.contains("missions") && !body.at("missions").is_null()) {
+      if (!body.at("missions").is_array()) throw app::InvalidRequest("missions must be a list of mission names");
+      o.missions.emplace();
+      for (const json& m : body.at("missions")) {
+        if (!m.is_string()) throw app::InvalidRequest("missions must be a list of mission names");
+        o.missions->push_back(m.get<std::string>());
+      }
+    }
+    const auto integer = [&](const char* key) -> std::optional<int> {
+      if (!body.contains(key) || body.at(key).is_null()) return std::nullopt;
+      if (!body.at(key).is_number_integer()) throw app::InvalidRequest(std::string(key) + " must be a whole number");
+      return body.at(key).get<int>();
+    };
+    o.designs = integer("designs");
+    o.assessment_seeds = integer("assessment_seeds");
+    if (body.contains("budget_scale") && !body.at("budget_scale").is_null()) {
+      if (!body.at("budget_scale").is_number()) throw app::InvalidRequest("budget_scale must be a number");
+      o.budget_scale = body.at("budget_scale").get<double>();
+    }
+    if (body.contains("seed") && !body.at("seed").is_null()) o.seed = app::parse_seed(text_field(body, "seed"));
+    if (body.contains("name") && !body.at("name").is_null() && !text_field(body, "name").empty()) o.name = text_field(body, "name");
+    return experiments::with_overrides(std::move(protocol), o);
+  } catch (const experiments::ProtocolError& e) {
+    throw app::InvalidRequest(e.what());
+  }
+}
+
+/// Planned as the CLI plans it, every mission read under the user's own scope first (a
+/// protocol may name mission files: only the user's own).
+app::PlannedExperiment planned(Call& call, const experiments::Protocol& protocol) {
+  const app::FileScope scope = app::FileScope::own_projects(call.home, call.user);
+  for (const auto& m : protocol.missions) app::load_requested_mission(m.mission, scope);
+  return app::plan_experiment(protocol);
+}
+
+/// The project's experiments, each saying whether this server runs it.
+json experiments_list(Call& call, const std::string& project) {
+  const auto progress = app::experiments_progress(call.home, call.user, project);
+  json list = app::experiments_document(progress);
+  for (std::size_t i = 0; i < progress.size(); ++i)
+    list[i]["running_here"] = call.context.experiments.running_here(progress[i].experiment.id);
+  return list;
+}
+
+json started_document(Call& call, const app::PlannedExperiment& plan, const app::StartedExperiment& started) {
+  for (const json& e : experiments_list(call, started.project.name))
+    if (e.at("name") == started.experiment.name)
+      return {{"experiment", e}, {"resumed", started.resumed}, {"already_finished", started.already_finished},
+              {"notes", plan.notes}};
+  throw app::NotFound("experiment " + started.experiment.name + " vanished");
+}
+
+}  // namespace
+
 void add_experiment_routes(Routes& routes) {
   const std::string project = std::string("/api/projects/") + kNamePattern;
 
-  routes.get(project + "/experiments", [](Call& call) {
-    return app::experiments_document(app::experiments_progress(call.home, call.user, call.match(1)));
+  // The thesis' protocols, whole, for the page to offer and show.
+  routes.get("/api/protocols", [](Call&) {
+    json list = json::array();
+    for (const std::string& name : experiments::builtin_protocol_names())
+      list.push_back({{"name", name}, {"protocol", experiments::to_json(experiments::builtin_protocol(name))}});
+    return list;
+  });
+
+  routes.get(project + "/experiments", [](Call& call) { return experiments_list(call, call.match(1)); });
+
+  // `swarmdesign experiment` from the page: planned (dry_run: only that), recorded and run on a
+  // thread of this server; the same name and protocol again resumes an interrupted one.
+  routes.post(project + "/experiments", [](Call& call) -> json {
+    const app::PlannedExperiment plan = planned(call, requested_protocol(call.body));
+    if (call.body.contains("dry_run") && call.body.at("dry_run").is_boolean() && call.body.at("dry_run").get<bool>())
+      return app::plan_document(plan, nullptr);
+    return started_document(call, plan, call.context.experiments.start(call.home, call.user, plan, call.match(1)));
+  });
+
+  routes.post(project + "/experiments/" + kNamePattern + "/stop", [](Call& call) -> json {
+    return {{"stopping", call.context.experiments.stop(call.home, call.user, call.match(1), call.match(2))}};
+  });
+
+  // An interrupted experiment goes on with the protocol it was started with.
+  routes.post(project + "/experiments/" + kNamePattern + "/resume", [](Call& call) -> json {
+    const storage::Project p = storage::Projects(call.home.workspace(), call.user).get(call.match(1));
+    const storage::Experiment e = storage::Experiments(call.home.workspace(), p).get(call.match(2));
+    const app::PlannedExperiment plan = planned(call, experiments::protocol_from_json(json::parse(e.protocol)));
+    return started_document(call, plan, call.context.experiments.start(call.home, call.user, plan, p.name));
   });
 
   routes.get_raw(project + "/experiments/" + kNamePattern + "/report", [](Call& call) {

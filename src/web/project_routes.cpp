@@ -99,7 +99,10 @@ void add_project_routes(Routes& routes) {
     json doc = app::status_document(status, true);
     doc["running_here"] = call.context.designs.running_here(status.project.id);
     doc["budget"] = status.project.budget ? json(*status.project.budget) : json();
-    doc["experiments"] = app::experiments_document(app::experiments_progress(call.home, call.user, call.match(1)));
+    const auto experiments = app::experiments_progress(call.home, call.user, call.match(1));
+    doc["experiments"] = app::experiments_document(experiments);
+    for (std::size_t i = 0; i < experiments.size(); ++i)
+      doc["experiments"][i]["running_here"] = call.context.experiments.running_here(experiments[i].experiment.id);
     return doc;
   });
 

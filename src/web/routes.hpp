@@ -10,6 +10,7 @@
 #include <string>
 
 #include "app/background_designs.hpp"
+#include "app/background_experiments.hpp"
 #include "app/home.hpp"
 #include "storage/accounts.hpp"
 #include "web/password_slots.hpp"
@@ -24,7 +25,7 @@ struct WebContext {
   WebContext(std::filesystem::path home_folder, std::filesystem::path web_root_folder, storage::SignInPolicy policy,
              bool tls_proxy)
       : home(std::move(home_folder)), web_root(std::move(web_root_folder)), sign_in(policy), behind_tls(tls_proxy),
-        addresses(policy), passwords(kPasswordChecksAtOnce), designs("web") {}
+        addresses(policy), passwords(kPasswordChecksAtOnce), designs("web"), experiments("webx") {}
   static constexpr int kPasswordChecksAtOnce = 4;  // 256 MiB of Argon2id at most
   std::filesystem::path home;
   std::filesystem::path web_root;  // the built front end (the report page's bundle)
@@ -35,6 +36,7 @@ struct WebContext {
   SessionGuard guard;
   RunRegistry runs;
   app::BackgroundDesigns designs;
+  app::BackgroundExperiments experiments;
 };
 
 /// One request being answered: its own connection to the home (SQLite connections are per

@@ -783,6 +783,78 @@ TEST_F(WebServer, TwoFinishedDesignsAreComparedOnTheSameSeedsWithAPairedTest) {
   EXPECT_EQ(alice_->post("/api/projects/c/argos", {{"design", 999}}).status, 404);
 }
 
+/// A protocol of one short mission file, two conditions, one design each.
+std::string tiny_protocol(const std::string& name, const std::string& mission, long long budget) {
+  const json conditions = json::array({{{"name", "fsm"}, {"architectures", {"fsm"}}, {"flavours", {"chocolate"}}},
+                                       {{"name", "bt"}, {"architectures", {"bt"}}, {"flavours", {"maple"}}}});
+  return json{{"name", name}, {"designs", 1}, {"assessment_seeds", 3},
+              {"missions", {{{"mission", mission}, {"budget", budget}, {"conditions", conditions}}}}}.dump();
+}
+
+TEST_F(WebServer, AnExperimentIsStartedFollowedStoppedAndResumedFromThePageByItsOwnerOnly) {
+  alice_project("x", "1100");
+  const std::string mission = alice_->get("/api/projects").body.at(0).at("mission");
+
+  // The built-in protocols are offered whole.
+  const Answer protocols = alice_->get("/api/protocols");
+  ASSERT_EQ(protocols.status, 200);
+  ASSERT_EQ(protocols.body.size(), 3u);
+  EXPECT_EQ(protocols.body.at(0).at("name"), "validation");
+  EXPECT_FALSE(protocols.body.at(0).at("protocol").at("missions").empty());
+
+  // Planned only: nothing recorded.
+  const Answer plan = alice_->post("/api/projects/x/experiments", {{"text", tiny_protocol("quick", mission, 1500)}, {"dry_run", true}});
+  ASSERT_EQ(plan.status, 200) << plan.text;
+  EXPECT_EQ(plan.body.at("designs").size(), 2u) << plan.text;
+  EXPECT_TRUE(alice_->get("/api/projects/x/experiments").body.empty());
+
+  // Bad protocols get the protocol's one line; another user's mission file is out of reach.
+  const Answer bad = alice_->post("/api/projects/x/experiments", {{"text", R"({"name": "q", "designs": 0, "missions": []})"}});
+  EXPECT_EQ(bad.status, 400);
+  EXPECT_NE(bad.text.find("designs"), std::string::npos) << bad.text;
+  EXPECT_EQ(alice_->post("/api/projects/x/experiments", {{"protocol", "no-such"}}).status, 400);
+  {
+    const auto folder = root_ / "home" / "users" / "bob" / "projects" / "b";
+    std::filesystem::create_directories(folder);
+    ASSERT_EQ(bob_->post("/api/projects", {{"name", "b"}, {"mission", write_short_mission(folder).string()}, {"budget", "2000"}}).status, 200);
+    const std::string bobs = bob_->get("/api/projects").body.at(0).at("mission");
+    EXPECT_EQ(alice_->post("/api/projects/x/experiments", {{"text", tiny_protocol("theft", bobs, 1500)}}).status, 404);
+    EXPECT_EQ(bob_->post("/api/projects/x/experiments", {{"text", tiny_protocol("quick", bobs, 1500)}}).status, 404);
+  }
+  EXPECT_TRUE(alice_->get("/api/projects/x/experiments").body.empty());
+
+  // Started, followed while its first design races, stopped, resumed to the end.
+  const Answer started = alice_->post("/api/projects/x/experiments", {{"text", tiny_protocol("quick", mission, 5000)}});
+  ASSERT_EQ(started.status, 200) << started.text;
+  EXPECT_EQ(started.body.at("experiment").at("state"), "running");
+  EXPECT_TRUE(started.body.at("experiment").at("running_here").get<bool>());
+  EXPECT_EQ(alice_->post("/api/projects/x/experiments", {{"text", tiny_protocol("other", mission, 1500)}}).status, 409)
+      << "one experiment per user on the server";
+  ASSERT_TRUE(wait_until([&] {
+    const json list = alice_->get("/api/projects/x/experiments").body;
+    return list.at(0).contains("current") && list.at(0).at("current").value("runs_used", 0) > 0;
+  }, std::chrono::seconds(120)));
+  EXPECT_EQ(alice_->get("/api/projects/x/status").body.at("experiments").at(0).at("running_here"), true);
+  EXPECT_EQ(bob_->post("/api/projects/x/experiments/quick/stop", json::object()).status, 404);
+  ASSERT_EQ(alice_->post("/api/projects/x/experiments/quick/stop", json::object()).status, 200);
+  ASSERT_TRUE(wait_until([&] { return alice_->get("/api/projects/x/experiments").body.at(0).at("state") == "interrupted"; },
+                         std::chrono::seconds(120)));
+  EXPECT_EQ(alice_->post("/api/projects/x/experiments/quick/stop", json::object()).status, 409);
+  EXPECT_EQ(bob_->post("/api/projects/x/experiments/quick/resume", json::object()).status, 404);
+  const Answer resumed = alice_->post("/api/projects/x/experiments/quick/resume", json::object());
+  ASSERT_EQ(resumed.status, 200) << resumed.text;
+  EXPECT_TRUE(resumed.body.at("resumed").get<bool>());
+  ASSERT_TRUE(wait_until([&] { return alice_->get("/api/projects/x/experiments").body.at(0).at("state") == "finished"; },
+                         std::chrono::seconds(600)));
+  const json done = alice_->get("/api/projects/x/experiments").body.at(0);
+  EXPECT_EQ(done.at("designs_done"), 2);
+  EXPECT_FALSE(done.at("running_here").get<bool>());
+  const Answer designs = alice_->get("/api/projects/x/experiments/quick/designs.csv");
+  EXPECT_EQ(designs.status, 200);
+  EXPECT_EQ(std::count(designs.text.begin(), designs.text.end(), '\n'), 3) << designs.text;  // a header, two designs
+  EXPECT_EQ(bob_->get("/api/projects/x/experiments/quick/designs.csv").status, 404);
+}
+
 TEST_F(WebServer, OneUserRunsAtMostTwoDesignsHereAndTheThirdChangesNothing) {
   const json fsm{{"flavours", "chocolate"}, {"architectures", "fsm"}, {"seed", 3}};
   for (const char* name : {"p1", "p2", "p3"}) alice_project(name, "200000");

@@ -32,6 +32,11 @@ nlohmann::json experiments_document(const std::vector<ExperimentProgress>& exper
       item["current"] = {{"mission", mission_label(e.current->plan.mission)},     {"condition", e.current->plan.condition},
                          {"replicate", e.current->plan.replicate}, {"stage", storage::to_string(e.current->stage)},
                          {"budget", e.current->plan.budget},       {"folder", e.current->folder.string()}};
+    if (e.current && e.current_race && e.current_race->started) {
+      item["current"]["runs_used"] = e.current_race->experiments_used;
+      item["current"]["iteration"] = e.current_race->iteration;
+      if (e.current_race->best) item["current"]["best_score"] = e.current_race->best->mean_score;
+    }
     list.push_back(std::move(item));
   }
   return list;

@@ -1,0 +1,55 @@
+#pragma once
+// Experiments running in the background of a long-lived process (the web server's "Start
+// experiment"): each is the experiment job (experiment_job.hpp) on a thread of its own, leased
+// by a storage::ServerThread "<job>-N" of this process and stopped through its CancelToken, so
+// it is interrupted and resumes exactly as an experiment of the CLI does. Stopping one that a
+// CLI process of this machine runs sends that process SIGTERM (everything it did is durable).
+#include <atomic>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+
+#include "app/cancel_token.hpp"
+#include "app/experiment_job.hpp"
+#include "app/home.hpp"
+
+namespace sd::app {
+
+class BackgroundExperiments {
+ public:
+  /// Each experiment takes every core: one per user, and a few for the server.
+  static constexpr int kPerUser = 1;
+  static constexpr int kPerServer = 4;
+
+  explicit BackgroundExperiments(std::string job) : job_(std::move(job)) {}
+  ~BackgroundExperiments();  // cancels every experiment (they become interrupted) and waits
+
+  /// Records the planned experiment in the project (or takes up its interrupted namesake) and
+  /// runs it on a thread. Conflict, before anything is recorded, past kPerUser or kPerServer.
+  StartedExperiment start(Home& home, const storage::User& user, const PlannedExperiment& plan,
+                          const std::string& project);
+  /// Asks experiment `name` of the project to stop after its current race step (a thread of
+  /// this server) or stops the CLI process of this machine that runs it. NotFound for an
+  /// experiment the project does not have; Conflict when it does not run, or runs elsewhere.
+  std::string stop(Home& home, const storage::User& user, const std::string& project, const std::string& name);
+  bool running_here(std::int64_t experiment_id) const;
+
+ private:
+  struct Job {
+    std::int64_t user_id = 0;
+    CancelToken cancel;
+    std::atomic<bool> done{false};
+    std::thread thread;
+  };
+  void reap();  // joins the finished jobs (mutex_ held)
+
+  const std::string job_;
+  mutable std::mutex mutex_;
+  std::map<std::int64_t, std::unique_ptr<Job>> jobs_;  // by experiment id
+  int next_job_ = 1;
+};
+
+}  // namespace sd::app
