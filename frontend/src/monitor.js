@@ -11,6 +11,7 @@ import { linePlot } from './plot.js';
 import { el } from './properties.js';
 import { boxPlot, initSeedTest } from './seed_test.js';
 import { confirmDelete } from './confirm_dialog.js';
+import { initExperiments } from './experiments.js';
 import { readable } from './numbers.js';
 import { download } from './download.js';
 
@@ -152,20 +153,8 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
     }
   }
 
-  /// The project's experiments (swarmdesign experiment): progress and a link to the report page.
-  function renderExperiments(s) {
-    const list = s.experiments || [];
-    $('experiment-list').replaceChildren(...list.map((e) => {
-      const current = e.current && e.state !== 'finished'
-        ? ` · ${e.state === 'running' ? 'now' : 'next'} ${e.current.mission} / ${e.current.condition} #${e.current.replicate}` : '';
-      const href = `/api/projects/${encodeURIComponent(selected)}/experiments/${encodeURIComponent(e.name)}/report`;
-      return el('li', { testid: `experiment-${e.name}` },
-        el('span', { text: `${e.name} · ${e.state}` }),
-        el('span', { class: 'muted', text: `${e.designs_done} / ${e.designs} designs${current}` }),
-        el('a', { href, target: '_blank', rel: 'noopener', testid: `report-${e.name}`, text: 'report' }));
-    }));
-    if (!list.length) $('experiment-list').append(el('li', { class: 'muted small', text: 'none (swarmdesign experiment)' }));
-  }
+  const experiments = initExperiments({ project: () => selected, onChanged: () => { fastUntil = Date.now() + 10000; poll(); } });
+  const renderExperiments = (s) => experiments.render(s.experiments || []);
 
   function lastRace(s) { return s.race_log && s.race_log.length ? s.race_log[s.race_log.length - 1] : null; }
 
