@@ -90,7 +90,8 @@ test('the report of a real experiment opens offline and in the web app', { timeo
     await page.click('[data-testid="project-thesis"]');
     const item = page.locator('[data-testid="experiment-small"]');
     await item.waitFor();
-    assert.match(await item.textContent(), /small · finished.*12 \/ 12 designs/);
+    assert.match(await page.textContent('[data-testid="exp-state-small"]'), /^finished$/);
+    assert.match(await page.textContent('[data-testid="exp-progress-small"]'), /^12 \/ 12 designs done$/);
     await page.screenshot({ path: path.join(SCREENSHOTS, 'report-in-app-designs.png') });
     const href = await page.getAttribute('[data-testid="report-small"]', 'href');
     assert.equal(href, '/api/projects/thesis/experiments/small/report');

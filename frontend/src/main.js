@@ -4,6 +4,7 @@ import { api, setCsrf, whenUnauthorized } from './api.js';
 import { loadCatalogue } from './catalogue.js';
 import { DEFAULT_TEXT, initEditor } from './editor.js';
 import { initExec } from './exec.js';
+import { initMissionEditor } from './mission_editor.js';
 import { initMissionUpload, renderMissions } from './missions.js';
 import { initMonitor } from './monitor.js';
 import { copyFullScores } from './numbers.js';
@@ -24,7 +25,7 @@ function showTab(name) {
   if (name === 'editor') { parts.editor.resize(); parts.editor.refreshProjects(); }
   if (name === 'exec') parts.exec.shown();
   if (name === 'designs') parts.monitor.shown(); else parts.monitor.hidden();
-  if (name === 'missions') parts.upload.refreshProjects();
+  if (name === 'missions') { parts.upload.refreshProjects(); parts.missionEditor.refreshProjects(); }
 }
 
 async function startApp(user) {
@@ -47,11 +48,13 @@ async function startApp(user) {
     missions = list;
     exec.setMissions(missions);
     monitor.setMissions(missions);
+    missionEditor.setMissions(missions);
     renderMissions($('mission-grid'), missions, (name) => { exec.prepare({ mission: name, text: $('exec-text').value || editor.current.text }); showTab('exec'); });
   };
   const upload = initMissionUpload({ onUploaded: async () => showMissions(await api('/api/missions')) });
+  const missionEditor = initMissionEditor({ onSaved: async () => showMissions(await api('/api/missions')) });
   copyFullScores();
-  parts = { editor, exec, monitor, upload };
+  parts = { editor, exec, monitor, upload, missionEditor };
   window.__sd = parts; // for the end-to-end tests and the curious
   window.__sd.execCounts = () => exec.graph.nodes().reduce((sum, n) => sum + (n.data('count') || 0), 0);
   for (const tab of document.querySelectorAll('.tab')) tab.addEventListener('click', () => showTab(tab.dataset.tab));

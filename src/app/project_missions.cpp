@@ -52,6 +52,16 @@ std::vector<ProjectMission> list_project_missions(Home& home, const storage::Use
 
 ProjectMission save_project_mission(Home& home, const storage::User& user, const std::string& project,
                                     const std::string& name, const std::string& text) {
+  check_project_mission(home, user, project, name, text);
+  const auto folder = FileScope::own_projects(home, user).writable_folder(folder_of(home, user, project),
+                                                                          "the project's missions folder");
+  const auto file = folder / (name + ".json");
+  replace_file_durably(file, text, 0600, Umask::Applies);
+  return {name, file};
+}
+
+Mission check_project_mission(Home& home, const storage::User& user, const std::string& project,
+                              const std::string& name, const std::string& text) {
   static const std::regex rule("[A-Za-z0-9][A-Za-z0-9_-]{0,63}");
   if (!std::regex_match(name, rule))
     throw InvalidRequest("mission name '" + name.substr(0, 80) +
@@ -69,10 +79,7 @@ ProjectMission save_project_mission(Home& home, const storage::User& user, const
     throw InvalidRequest(std::string("mission '") + name + "': " + e.what());
   }
   require_room_for_robots(mission, name);
-  const auto folder = scope.writable_folder(wanted_folder, "the project's missions folder");
-  const auto file = folder / (name + ".json");
-  replace_file_durably(file, text, 0600, Umask::Applies);
-  return {name, file};
+  return mission;
 }
 
 }  // namespace sd::app

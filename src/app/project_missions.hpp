@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/home.hpp"
+#include "missions/mission.hpp"
 #include "storage/accounts.hpp"
 
 namespace sd::app {
@@ -18,6 +19,10 @@ struct ProjectMission {
 
 /// The project's mission files, by name; NotFound for another user's project.
 std::vector<ProjectMission> list_project_missions(Home& home, const storage::User& user, const std::string& project);
+/// What save_project_mission checks, without storing anything (the mission editor's live
+/// drawing): the mission as it would be read from the project.
+Mission check_project_mission(Home& home, const storage::User& user, const std::string& project,
+                              const std::string& name, const std::string& text);
 /// Validates `text` as the CLI does (one line naming the bad field), places the robots of its
 /// first seed (a start region the walls leave no room in is refused), then stores it, replacing
 /// a file of that name. InvalidRequest for a bad name, an oversized or malformed document;

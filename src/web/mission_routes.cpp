@@ -43,6 +43,19 @@ void add_mission_routes(Routes& routes) {
     return doc;
   });
 
+  // The mission editor's live drawing: checked as an upload is, stored nowhere.
+  routes.post(project + "/missions/preview", [](Call& call) -> nlohmann::json {
+    const Mission mission = app::check_project_mission(call.home, call.user, call.match(1), text_field(call.body, "name"),
+                                                       text_field(call.body, "text"));
+    return {{"svg", mission_svg(mission)}, {"mission", app::mission_document(mission)}};
+  });
+
+  // A mission's file as written (comments and all): what the mission editor starts from.
+  routes.get("/api/missions/text", [](Call& call) -> nlohmann::json {
+    const Mission mission = load_user_mission(call.home, call.user, call.request.get_param_value("name"));
+    return {{"name", mission.name}, {"text", mission.document}};
+  });
+
   routes.get_raw("/api/missions/svg", [](Call& call) {
     const Mission mission = load_user_mission(call.home, call.user, call.request.get_param_value("name"));
     call.response.set_content(mission_svg(mission), "image/svg+xml");

@@ -280,6 +280,22 @@ TEST_F(WebServer, AMissionUploadedIntoAProjectIsStoredPrivatelyListedAndRunnable
   EXPECT_EQ(bob_->get("/api/missions/svg?name=" + file).status, 404);
   EXPECT_EQ(bob_->post("/api/runs", {{"text", kFsm}, {"mission", file}, {"seed", 1}}).status, 404);
   for (const json& m : bob_->get("/api/missions").body) EXPECT_NE(m.at("name"), file);
+  EXPECT_EQ(bob_->get("/api/missions/text?name=" + file).status, 404);
+  EXPECT_EQ(bob_->post("/api/projects/mine/missions/preview", {{"name", "corner"}, {"text", text}}).status, 404);
+
+  // The mission editor's reads: a mission's text as written, and a drawing of a draft stored nowhere.
+  EXPECT_EQ(alice_->get("/api/missions/text?name=" + file).body.at("text"), text);
+  EXPECT_EQ(alice_->get("/api/missions/text?name=aac").body.at("text"), load_mission("aac").document);
+  const Answer drawn = alice_->post("/api/projects/mine/missions/preview", {{"name", "draft"}, {"text", own_mission("draft").dump()}});
+  ASSERT_EQ(drawn.status, 200) << drawn.text;
+  EXPECT_EQ(drawn.body.at("svg").get<std::string>().rfind("<svg", 0), 0u);
+  EXPECT_EQ(drawn.body.at("mission").at("robots"), 20);
+  EXPECT_FALSE(std::filesystem::exists(stored.parent_path() / "draft.json"));
+  json crowded = own_mission("crowded");
+  crowded["arena"]["walls"].push_back({{"box", {{"center", {0, 0}}, {"size", {2.4, 2.4}}}}});
+  const Answer refused = alice_->post("/api/projects/mine/missions/preview", {{"name", "crowded"}, {"text", crowded.dump()}});
+  EXPECT_EQ(refused.status, 400);
+  EXPECT_NE(refused.text.find("cannot place robot"), std::string::npos) << refused.text;
   std::ifstream again(stored);
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(again), {}), text);
 }
