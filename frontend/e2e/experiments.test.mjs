@@ -84,6 +84,12 @@ test('an own protocol starts, is followed, stopped, resumed and finished, with i
   await page.waitForFunction(() => /runs \d+ \/ \d+/.test(document.querySelector('[data-testid="exp-progress-quick"]')?.textContent || ''), null, { timeout: 60000, polling: 200 });
   assert.match(await page.textContent('[data-testid="exp-state-quick"]'), /^running \(here\)$/);
   await shot(page, 'running');
+  // Its design opens in the monitor, as a design of the project does.
+  await page.click('[data-testid="exp-follow-quick"]');
+  await page.waitForFunction(() => /^Showing the design experiment quick is making/.test(document.querySelector('[data-testid="opened-note"]')?.textContent || ''));
+  await page.waitForFunction(() => document.querySelectorAll('#elites tbody tr[data-testid^="elite-"]').length > 0, null, { timeout: 60000 });
+  assert.match(await page.textContent('#runs-used'), /^\d+ \/ 6000$/);
+  await shot(page, 'experiment-design-watched');
   await page.click('[data-testid="exp-stop-quick"]');
   await page.waitForFunction(() => document.querySelector('[data-testid="exp-state-quick"]')?.textContent === 'interrupted', null, { timeout: 60000 });
   await shot(page, 'stopped');

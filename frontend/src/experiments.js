@@ -9,7 +9,7 @@ import { el } from './properties.js';
 
 const $ = (id) => document.getElementById(id);
 
-export function initExperiments({ project, onChanged }) {
+export function initExperiments({ project, onChanged, onFollow }) {
   let protocols = [];
   let ownText = null;  // the user's protocol file, as read
 
@@ -89,6 +89,9 @@ export function initExperiments({ project, onChanged }) {
         ? `${e.state === 'running' ? 'now' : 'next'}: ${c.mission} / ${c.condition} #${c.replicate} (${c.stage}${race})` : '';
       const buttons = [];
       if (e.state === 'running') buttons.push(el('button', { type: 'button', class: 'small', testid: `exp-stop-${e.name}`, text: 'Stop', onclick: () => act(e.name, 'stop') }));
+      if (c && e.state !== 'finished' && c.stage === 'designing')
+        buttons.push(el('button', { type: 'button', class: 'small', testid: `exp-follow-${e.name}`, text: 'Watch design',
+          title: 'show the design it is making in the monitor (runs, elites, convergence, best)', onclick: () => onFollow(e.name) }));
       if (e.state === 'interrupted' || e.state === 'failed') buttons.push(el('button', { type: 'button', class: 'small', testid: `exp-resume-${e.name}`, text: 'Resume', onclick: () => act(e.name, 'resume') }));
       return el('li', { testid: `experiment-${e.name}`, class: 'experiment-row' },
         el('span', { class: 'design-actions' },

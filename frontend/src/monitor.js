@@ -28,7 +28,7 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
   let plot = null;
   let visible = false;
   let fastUntil = 0;
-  let opened = null;  // an earlier design shown instead of the latest (its id), or null
+  let opened = null;  // an earlier design shown instead of the latest (its id), {experiment: name}, or null
   const comparing = new Set();  // ids of the designs ticked for comparison
   const graph = createGraph($('best-graph'), { readOnly: true });
   const form = initDesignForm(getCatalogue());
@@ -78,7 +78,7 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
     const rows = await api(`/api/projects/${encodeURIComponent(selected)}/designs`).catch(() => []);
     listed = rows.length ? { id: rows[0].id, state: rows[0].state } : null;
     for (const id of [...comparing]) if (!rows.some((d) => d.id === id && d.best_configuration)) comparing.delete(id);
-    if (opened !== null && !rows.some((d) => d.id === opened)) opened = null;
+    if (typeof opened === 'number' && !rows.some((d) => d.id === opened)) opened = null;
     $('design-list').replaceChildren(...rows.map((d) => designRow(d, d === rows[0])));
     if (!rows.length) $('design-list').append(el('li', { class: 'muted small', text: 'no design yet' }));
     updateCompareButton();
@@ -153,7 +153,8 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
     }
   }
 
-  const experiments = initExperiments({ project: () => selected, onChanged: () => { fastUntil = Date.now() + 10000; poll(); } });
+  const experiments = initExperiments({ project: () => selected, onChanged: () => { fastUntil = Date.now() + 10000; poll(); },
+    onFollow: (name) => openDesign({ experiment: name }) });
   const renderExperiments = (s) => experiments.render(s.experiments || []);
 
   function lastRace(s) { return s.race_log && s.race_log.length ? s.race_log[s.race_log.length - 1] : null; }
@@ -201,9 +202,10 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
     $('design-stop').disabled = latestState !== 'running';
     showResumable(opened === null ? design : null);
 
+    const note = opened === null ? '' : opened.experiment ? `Showing the design experiment ${opened.experiment} is making. ` : `Showing earlier design #${design.id}. `;
     $('design-info').replaceChildren(...(opened === null ? [] : [el('span', { class: 'opened-note', testid: 'opened-note' },
-      `Showing earlier design #${design.id}. `, el('button', { type: 'button', class: 'link', testid: 'show-latest', text: 'show the latest', onclick: () => openDesign(null) }))]),
-    document.createTextNode(`Design #${design.id}: ${startedWith(design)}`));
+      note, el('button', { type: 'button', class: 'link', testid: 'show-latest', text: 'show the latest', onclick: () => openDesign(null) }))]),
+    document.createTextNode(`${opened && opened.experiment ? `Experiment design #${design.id}` : `Design #${design.id}`}: ${startedWith(design)}`));
     $('design-info').title = design.mission || '';
     renderElites(progress.elites || []);
     // Convergence: the best elite's mean over all its runs at the end of each iteration.
@@ -220,8 +222,10 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
       : [document.createTextNode('no configuration yet')]));
     if (!testTarget || testTarget.text !== best) $('argos-result').replaceChildren();
     testTarget = best ? { project: selected, text: best } : null;
-    $('test-run').disabled = !best;
-    $('argos-best').disabled = !best;
+    // Tests and exports run on the project's mission: not for an experiment's design (its report assesses it).
+    const ownDesign = !(opened && opened.experiment);
+    $('test-run').disabled = !best || !ownDesign;
+    $('argos-best').disabled = !best || !ownDesign;
     for (const id of ['watch-best', 'edit-best']) {
       $(id).disabled = !best;
       $(id).dataset.text = best || '';
@@ -267,8 +271,19 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
     let running = false;
     try {
       const wanted = opened;
-      const query = wanted === null ? '' : `?design=${wanted}`;
-      const s = await api(`/api/projects/${encodeURIComponent(name)}/status${query}`, { quiet: true });
+      const base = `/api/projects/${encodeURIComponent(name)}`;
+      const url = wanted === null ? `${base}/status`
+        : wanted.experiment ? `${base}/experiments/${encodeURIComponent(wanted.experiment)}/current` : `${base}/status?design=${wanted}`;
+      let s;
+      try {
+        s = await api(url, { quiet: true });
+      } catch (e) {
+        // The experiment's designs are all done (or it went): back to the project's latest design.
+        if (wanted && wanted.experiment && e.status === 404 && wanted === opened) { opened = null; poll(); return; }
+        throw e;
+      }
+      // An experiment's design brings no experiment list: it is asked for beside it.
+      if (wanted && wanted.experiment) s.experiments = await api(`${base}/experiments`, { quiet: true }).catch(() => (status ? status.experiments : []));
       if (name !== selected || wanted !== opened) return;
       const was = status && status.design && status.design.state;
       status = s;

@@ -2,6 +2,7 @@
 
 #include "app/cluster_designs.hpp"
 #include "app/errors.hpp"
+#include "app/experiment_job.hpp"
 #include "app/local_processes.hpp"
 #include "app/projects.hpp"
 #include "storage/design_store.hpp"
@@ -20,6 +21,23 @@ DesignBackend& stopper_of(const storage::Design& design, DesignBackend* server) 
   if (owner && std::holds_alternative<storage::SlurmJob>(*owner)) return slurm_jobs;
   if (owner && std::holds_alternative<storage::ServerThread>(*owner) && server) return *server;
   return local_processes;  // a CLI process; it refuses what it cannot reach
+}
+
+/// The race as far as it went, from the design's own folder.
+void read_race(DesignStatus& status, bool complete) {
+  const storage::Design& d = *status.design;
+  try {
+    if (std::filesystem::exists(storage::DesignStore::file_in(d.folder))) {
+      status.progress = storage::read_design_progress(d.folder);
+      if (complete) {
+        status.race_log = storage::read_race_log(d.folder);
+        status.convergence = storage::read_convergence(d.folder);
+      }
+    }
+  } catch (const storage::DesignFolderError&) {
+    // A design that has just started may not have committed its tables yet.
+    if (d.state != storage::DesignState::running) throw;
+  }
 }
 
 }  // namespace
@@ -65,24 +83,40 @@ DesignStatus design_status(Home& home, const storage::User& user, bool complete,
     on_cluster = backend_for(status.project).refresh(home, status.project, *status.design);
     status.cluster_job = storage::ClusterJobs(home.workspace(), status.project).find(status.design->id);
   }
-  const storage::Design& d = *status.design;
   if (on_cluster) {
     status.progress = *on_cluster;
     return status;
   }
-  try {
-    if (std::filesystem::exists(storage::DesignStore::file_in(d.folder))) {
-      status.progress = storage::read_design_progress(d.folder);
-      if (complete) {
-        status.race_log = storage::read_race_log(d.folder);
-        status.convergence = storage::read_convergence(d.folder);
-      }
-    }
-  } catch (const storage::DesignFolderError&) {
-    // A design that has just started may not have committed its tables yet.
-    if (d.state != storage::DesignState::running) throw;
-  }
+  read_race(status, complete);
   return status;
+}
+
+DesignStatus experiment_design_status(Home& home, const storage::User& user, const std::string& project,
+                                      const std::string& experiment) {
+  DesignStatus status;
+  status.project = storage::Projects(home.workspace(), user).get(project);
+  for (const ExperimentProgress& e : experiments_progress(home, user, project)) {
+    if (e.experiment.name != experiment) continue;
+    if (!e.current) throw NotFound("experiment " + experiment + " has no design under way: all are done");
+    const storage::ExperimentDesign& x = *e.current;
+    storage::Design d;
+    d.id = x.id;
+    d.architectures = x.plan.architectures;
+    d.flavours = x.plan.flavours;
+    d.mission = x.plan.mission;
+    d.budget = x.plan.budget;
+    d.seed = x.plan.seed;
+    d.folder = x.folder;
+    // It runs while its experiment does and it is being designed; otherwise it waits.
+    d.state = e.experiment.state == storage::DesignState::running && x.stage == storage::DesignStage::designing
+                  ? storage::DesignState::running
+                  : storage::DesignState::interrupted;
+    status.design = d;
+    read_race(status, true);
+    return status;
+  }
+  storage::Experiments(home.workspace(), status.project).get(experiment);  // NotFound naming the ones it has
+  throw NotFound("no experiment " + experiment);
 }
 
 }  // namespace sd::app

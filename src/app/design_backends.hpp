@@ -45,4 +45,9 @@ DesignStatus design_status(Home& home, const storage::User& user, bool complete,
                            const std::optional<std::string>& project = std::nullopt,
                            std::optional<std::int64_t> design_id = std::nullopt);
 
+/// The same for the design an experiment of the project is making (or stopped in): its race
+/// read from its folder; NotFound when the experiment has none under way (all done).
+DesignStatus experiment_design_status(Home& home, const storage::User& user, const std::string& project,
+                                      const std::string& experiment);
+
 }  // namespace sd::app

@@ -1,6 +1,8 @@
 // A project's experiments: started, stopped and resumed from the page (run on this server's
 // threads), their progress (the Designs tab lists them) and their report, the same page
 // `swarmdesign report` writes, made afresh from the database at every request.
+#include "app/design_backends.hpp"
+#include "app/documents/design.hpp"
 #include "app/documents/experiments.hpp"
 #include "app/errors.hpp"
 #include "app/experiment_job.hpp"
@@ -110,6 +112,15 @@ void add_experiment_routes(Routes& routes) {
     if (call.body.contains("dry_run") && call.body.at("dry_run").is_boolean() && call.body.at("dry_run").get<bool>())
       return app::plan_document(plan, nullptr);
     return started_document(call, plan, call.context.experiments.start(call.home, call.user, plan, call.match(1)));
+  });
+
+  // The design an experiment is making, as the monitor shows a design (`status --complete`).
+  routes.get(project + "/experiments/" + kNamePattern + "/current", [](Call& call) -> json {
+    const app::DesignStatus status = app::experiment_design_status(call.home, call.user, call.match(1), call.match(2));
+    json doc = app::status_document(status, true);
+    doc["running_here"] = false;  // the experiment's thread, not a design's: Stop is the experiment's
+    doc["budget"] = status.design->budget;
+    return doc;
   });
 
   routes.post(project + "/experiments/" + kNamePattern + "/stop", [](Call& call) -> json {

@@ -851,6 +851,14 @@ TEST_F(WebServer, AnExperimentIsStartedFollowedStoppedAndResumedFromThePageByIts
     return list.at(0).contains("current") && list.at(0).at("current").value("runs_used", 0) > 0;
   }, std::chrono::seconds(120)));
   EXPECT_EQ(alice_->get("/api/projects/x/status").body.at("experiments").at(0).at("running_here"), true);
+  // Its design under way opens as a design does in the monitor.
+  const Answer current = alice_->get("/api/projects/x/experiments/quick/current");
+  ASSERT_EQ(current.status, 200) << current.text;
+  EXPECT_EQ(current.body.at("design").at("budget"), 5000);
+  EXPECT_GT(current.body.at("progress").at("experiments_used").get<int>(), 0);
+  EXPECT_TRUE(current.body.contains("race_log"));
+  EXPECT_EQ(bob_->get("/api/projects/x/experiments/quick/current").status, 404);
+  EXPECT_EQ(alice_->get("/api/projects/x/experiments/none/current").status, 404);
   EXPECT_EQ(bob_->post("/api/projects/x/experiments/quick/stop", json::object()).status, 404);
   ASSERT_EQ(alice_->post("/api/projects/x/experiments/quick/stop", json::object()).status, 200);
   ASSERT_TRUE(wait_until([&] { return alice_->get("/api/projects/x/experiments").body.at(0).at("state") == "interrupted"; },
@@ -865,6 +873,7 @@ TEST_F(WebServer, AnExperimentIsStartedFollowedStoppedAndResumedFromThePageByIts
   const json done = alice_->get("/api/projects/x/experiments").body.at(0);
   EXPECT_EQ(done.at("designs_done"), 2);
   EXPECT_FALSE(done.at("running_here").get<bool>());
+  EXPECT_EQ(alice_->get("/api/projects/x/experiments/quick/current").status, 404) << "every design is done";
   const Answer designs = alice_->get("/api/projects/x/experiments/quick/designs.csv");
   EXPECT_EQ(designs.status, 200);
   EXPECT_EQ(std::count(designs.text.begin(), designs.text.end(), '\n'), 3) << designs.text;  // a header, two designs
