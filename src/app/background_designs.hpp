@@ -6,13 +6,10 @@
 // as a design of the CLI does.
 #include <atomic>
 #include <cstdint>
-#include <filesystem>
-#include <map>
-#include <memory>
 #include <mutex>
 #include <string>
-#include <thread>
 
+#include "app/background_jobs.hpp"
 #include "app/design_backend.hpp"
 #include "app/design_job.hpp"
 #include "app/project_design.hpp"
@@ -28,7 +25,7 @@ class BackgroundDesigns final : public DesignBackend {
 
   /// `job` names this process' designs in their leases ("web" -> "web-1", "web-2", ...).
   explicit BackgroundDesigns(std::string job) : job_(std::move(job)) {}
-  ~BackgroundDesigns();  // cancels every design (they become interrupted) and waits for them
+  // Destroying it cancels every design (they become interrupted) and waits for them.
 
   /// Starts (or resumes) launch.design.project's design on a thread; the errors of
   /// start_project_design. Its files may only be the user's own (FileScope::own_projects).
@@ -43,19 +40,10 @@ class BackgroundDesigns final : public DesignBackend {
   bool running_here(std::int64_t project_id) const;
 
  private:
-  struct Job {
-    std::int64_t project_id = 0;
-    std::int64_t user_id = 0;
-    CancelToken cancel;
-    std::atomic<bool> done{false};
-    std::thread thread;
-  };
-  void reap();  // joins the finished jobs (mutex_ held)
-
   const std::string job_;
-  mutable std::mutex mutex_;
-  std::map<std::int64_t, std::unique_ptr<Job>> jobs_;  // by design id
-  int next_job_ = 1;
+  std::mutex start_mutex_;  // counting and starting are one step
+  std::atomic<int> next_job_{1};
+  BackgroundJobs jobs_;     // by design id, grouped by project
 };
 
 }  // namespace sd::app

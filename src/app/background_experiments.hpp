@@ -6,13 +6,10 @@
 // CLI process of this machine runs sends that process SIGTERM (everything it did is durable).
 #include <atomic>
 #include <cstdint>
-#include <map>
-#include <memory>
 #include <mutex>
 #include <string>
-#include <thread>
 
-#include "app/cancel_token.hpp"
+#include "app/background_jobs.hpp"
 #include "app/experiment_job.hpp"
 #include "app/home.hpp"
 
@@ -25,7 +22,7 @@ class BackgroundExperiments {
   static constexpr int kPerServer = 4;
 
   explicit BackgroundExperiments(std::string job) : job_(std::move(job)) {}
-  ~BackgroundExperiments();  // cancels every experiment (they become interrupted) and waits
+  // Destroying it cancels every experiment (they become interrupted) and waits for them.
 
   /// Records the planned experiment in the project (or takes up its interrupted namesake) and
   /// runs it on a thread. Conflict, before anything is recorded, past kPerUser or kPerServer.
@@ -38,18 +35,10 @@ class BackgroundExperiments {
   bool running_here(std::int64_t experiment_id) const;
 
  private:
-  struct Job {
-    std::int64_t user_id = 0;
-    CancelToken cancel;
-    std::atomic<bool> done{false};
-    std::thread thread;
-  };
-  void reap();  // joins the finished jobs (mutex_ held)
-
   const std::string job_;
-  mutable std::mutex mutex_;
-  std::map<std::int64_t, std::unique_ptr<Job>> jobs_;  // by experiment id
-  int next_job_ = 1;
+  std::mutex start_mutex_;  // counting and starting are one step
+  std::atomic<int> next_job_{1};
+  BackgroundJobs jobs_;     // by experiment id, grouped by project
 };
 
 }  // namespace sd::app
