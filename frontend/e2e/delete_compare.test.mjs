@@ -7,7 +7,7 @@ import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { after, before, test } from 'node:test';
-import { cli, launchBrowser, newPage, PASSWORD, screenshotter, signIn, startServer } from './helpers.mjs';
+import { cli, PASSWORD, screenshotter, signedInPages, startServer } from './helpers.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 let server;
@@ -37,11 +37,7 @@ before(async () => {
   cli(server.env, ['select-project', 'lab']);
   cli(server.env, ['set-mission', file]);
   for (const seed of ['3', '4']) cli(server.env, ['run-design', '--fsm', '--chocolate', '--seed', seed, '--threads', '2'], '', 120000);
-  browser = await launchBrowser();
-  page = await newPage(browser, errors, { width: 1280, height: 800 });
-  await signIn(page, server.url, 'hal');
-  other = await newPage(browser, errors, { width: 1280, height: 800 });
-  await signIn(other, server.url, 'gus');
+  ({ browser, pages: [page, other] } = await signedInPages(server, ['hal', 'gus'], errors));
 }, { timeout: 180000 });
 
 after(async () => {
@@ -189,7 +185,7 @@ test('a project is deleted only when its name is typed, with all it holds', { ti
   // Its uploaded mission is gone from every list; hal's other project and gus's lab stay.
   await page.click('#tab-missions');
   await page.waitForSelector('.mission-card');
-  assert.equal(await page.locator('.mission-card', { hasText: 'short-aac' }).count(), 0);
+  await page.waitForFunction(() => ![...document.querySelectorAll('.mission-card')].some((c) => c.textContent.includes('short-aac')));
   assert.ok(existsSync(path.join(server.env.SWARMDESIGN_HOME, 'users', 'gus', 'projects', 'lab')));
   await page.click('#tab-designs');
   await shot(page, 'project-deleted');

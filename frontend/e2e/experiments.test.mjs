@@ -8,7 +8,7 @@ import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { after, before, test } from 'node:test';
-import { BIN, cli, launchBrowser, newPage, PASSWORD, screenshotter, signIn, startServer } from './helpers.mjs';
+import { BIN, cli, PASSWORD, screenshotter, signedInPages, startServer } from './helpers.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 let server;
@@ -36,11 +36,7 @@ before(async () => {
   delete doc.argos;
   missionFile = path.join(folder, 'short-aac.json');
   writeFileSync(missionFile, JSON.stringify(doc));
-  browser = await launchBrowser();
-  page = await newPage(browser, errors, { width: 1280, height: 800 });
-  await signIn(page, server.url, 'jan');
-  other = await newPage(browser, errors, { width: 1280, height: 800 });
-  await signIn(other, server.url, 'kim');
+  ({ browser, pages: [page, other] } = await signedInPages(server, ['jan', 'kim'], errors));
 }, { timeout: 60000 });
 
 after(async () => {

@@ -118,6 +118,18 @@ export async function newPage(browser, errors = [], viewport = { width: 1400, he
   return page;
 }
 
+/// A browser with a page signed in for each user name, in that order, page errors collected.
+export async function signedInPages(server, names, errors, viewport = { width: 1280, height: 800 }) {
+  const browser = await launchBrowser();
+  const pages = [];
+  for (const name of names) {
+    const page = await newPage(browser, errors, viewport);
+    await signIn(page, server.url, name);
+    pages.push(page);
+  }
+  return { browser, pages };
+}
+
 export function screenshotter(prefix) {
   mkdirSync(SCREENSHOTS, { recursive: true });
   for (const f of readdirSync(SCREENSHOTS)) if (f.startsWith(`${prefix}-`)) rmSync(path.join(SCREENSHOTS, f));

@@ -7,7 +7,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { cli, launchBrowser, newPage, screenshotter, signIn, startServer } from './helpers.mjs';
+import { cli, screenshotter, signedInPages, startServer } from './helpers.mjs';
 
 let server;
 let browser;
@@ -22,11 +22,7 @@ before(async () => {
     { name: 'liv', projects: [{ name: 'lab', mission: 'aac', budget: 2000 }] },
     { name: 'max', projects: [{ name: 'lab', mission: 'aac', budget: 2000 }] },
   ] });
-  browser = await launchBrowser();
-  page = await newPage(browser, errors, { width: 1280, height: 800 });
-  await signIn(page, server.url, 'liv');
-  other = await newPage(browser, errors, { width: 1280, height: 800 });
-  await signIn(other, server.url, 'max');
+  ({ browser, pages: [page, other] } = await signedInPages(server, ['liv', 'max'], errors));
 }, { timeout: 60000 });
 
 after(async () => {

@@ -9,7 +9,7 @@ import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { after, before, test } from 'node:test';
-import { cli, launchBrowser, newPage, screenshotter, signIn, startServer } from './helpers.mjs';
+import { cli, screenshotter, signedInPages, startServer } from './helpers.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 let server;
@@ -48,11 +48,7 @@ before(async () => {
     { name: 'fay', projects: [{ name: 'lab', mission: 'aac', budget: 1400 }] },
     { name: 'gus', projects: [{ name: 'lab', mission: 'aac', budget: 1400 }] },
   ] });
-  browser = await launchBrowser();
-  page = await newPage(browser, errors, { width: 1280, height: 800 });
-  await signIn(page, server.url, 'fay');
-  other = await newPage(browser, errors, { width: 1280, height: 800 });
-  await signIn(other, server.url, 'gus');
+  ({ browser, pages: [page, other] } = await signedInPages(server, ['fay', 'gus'], errors));
 }, { timeout: 60000 });
 
 after(async () => {
