@@ -1,0 +1,477 @@
+"""SwarmDesign from Python: the same engine as the ``swarmdesign`` command, in-process.
+
+Missions and control software::
+
+    import swarmdesign as sd
+    aac = sd.Mission.builtin("aac")
+    walk = sd.ControlSoftware.parse("--fsm-config --nstates 1 --s0 10 --rwm0 50")
+
+Scores (a NumPy array, the very bits ``swarmdesign evaluate`` prints), a run tick by tick, a
+design by Iterated F-Race and any design folder read back::
+
+    scores = sd.evaluate(aac, walk, seeds=range(1, 21))
+    run = sd.trace(aac, walk, seed=1)            # run.x[tick, robot], run.objective[tick], ...
+    result = sd.design("aac", budget=2000, architectures="fsm", flavours="chocolate", seed=1,
+                       folder="aac-design")      # resumable: call it again after Ctrl-C
+    sd.Design.open("aac-design").convergence     # a pandas DataFrame (list of dicts without pandas)
+
+Long calls release the GIL (other Python threads run meanwhile) and stop on Ctrl-C with
+KeyboardInterrupt (a design then resumes from its folder). Errors are SwarmDesignError
+subclasses carrying the CLI's one-line messages.
+"""
+
+from __future__ import annotations
+
+import itertools
+import json
+import math
+import operator
+import os
+import stat
+from typing import Any, Callable, Iterable, Optional, Sequence, Union
+
+import numpy as np
+
+from . import _core
+from ._core import (
+    AccessDeniedError,
+    ConfigError,
+    ConflictError,
+    ControlSoftware,
+    DesignFolderError,
+    ExportError,
+    InvalidRequestError,
+    Mission,
+    MissionError,
+    NotFoundError,
+    SwarmDesignError,
+)
+
+__version__: str = _core.__version__
+
+__all__ = [
+    "AccessDeniedError", "Account", "ConfigError", "ConflictError", "ControlSoftware", "Design",
+    "DesignFolderError", "DesignResult", "ExperimentReport", "ExportError", "FLAVOURS",
+    "InvalidRequestError", "MAX_SEEDS", "Mission", "MissionError", "NotFoundError",
+    "SwarmDesignError", "Trace", "design", "evaluate", "missions", "module_catalogue",
+    "resume_design", "trace",
+]
+
+#: The most seeds one evaluate() takes, as ``evaluate --seeds A-B`` does.
+MAX_SEEDS = 1_000_000
+#: The five AutoMoDe flavours, as ``--legacy-flavour`` and the design flags name them.
+FLAVOURS = ("chocolate", "tuttifrutti", "coconut", "maple", "arlequin")
+
+MissionLike = Union[Mission, str, "os.PathLike[str]"]
+SoftwareLike = Union[ControlSoftware, str]
+SeedsLike = Union[int, str, Iterable[int]]
+
+
+def _table(rows: list[dict[str, Any]], columns: Optional[Sequence[str]] = None) -> Any:
+    """A pandas DataFrame when pandas is installed, else the list of dicts itself."""
+    try:
+        import pandas as pd
+    except ImportError:
+        return rows
+    return pd.DataFrame(rows, columns=list(columns) if columns is not None else None)
+
+
+# ---- missions and control software -----------------------------------------------------
+
+def missions() -> list[dict[str, Any]]:
+    """The mission catalogue, as ``swarmdesign missions --json`` lists it: one dict per mission
+    (name, title, origin, robots, duration_s, direction, source)."""
+    return _core.missions()
+
+
+def module_catalogue() -> dict[str, Any]:
+    """Every module of the five flavours: ids, names, flavours and parameter domains."""
+    return _core.module_catalogue()
+
+
+def _mission(mission: MissionLike) -> Mission:
+    if isinstance(mission, Mission):
+        return mission
+    if isinstance(mission, (str, os.PathLike)):
+        return Mission.named(os.fspath(mission))
+    raise TypeError(f"mission: expected a swarmdesign.Mission, a catalogue name or a path, not {type(mission).__name__}")
+
+
+def _mission_reference(mission: MissionLike) -> str:
+    """What a design stores: a catalogue name, or a mission file's path."""
+    if isinstance(mission, Mission):
+        return mission.name if mission.source == "built-in" else mission.source
+    if isinstance(mission, (str, os.PathLike)):
+        return os.fspath(mission)
+    raise TypeError(f"mission: expected a swarmdesign.Mission, a catalogue name or a path, not {type(mission).__name__}")
+
+
+def _software(software: SoftwareLike) -> ControlSoftware:
+    if isinstance(software, ControlSoftware):
+        return software
+    if isinstance(software, str):
+        return ControlSoftware.parse(software)
+    raise TypeError(f"software: expected a swarmdesign.ControlSoftware or a configuration string, not {type(software).__name__}")
+
+
+def _integer(value: Any, what: str) -> int:
+    if isinstance(value, bool):
+        raise TypeError(f"{what}: expected an integer, not bool")
+    try:
+        return operator.index(value)
+    except TypeError:
+        raise TypeError(f"{what}: expected an integer, not {type(value).__name__}") from None
+
+
+def _seed(value: Any) -> int:
+    seed = _integer(value, "seed")
+    if not 0 <= seed < 2**64:
+        raise InvalidRequestError(f"seed '{seed}': expected a non-negative integer")
+    return seed
+
+
+def _seeds(seeds: SeedsLike) -> list[int]:
+    if isinstance(seeds, str):
+        return _core.parse_seed_range(seeds)
+    if isinstance(seeds, (int, np.integer)) and not isinstance(seeds, bool):
+        return [_seed(seeds)]
+    try:
+        count = len(seeds)  # type: ignore[arg-type]
+    except TypeError:
+        count = None
+    if count is not None and count > MAX_SEEDS:
+        raise InvalidRequestError(f"seeds: at most 1,000,000 seeds (got {count})")
+    try:
+        iterator = iter(seeds)  # type: ignore[arg-type]
+    except TypeError:
+        raise TypeError(f"seeds: expected an integer, 'A-B' or an iterable of integers, not {type(seeds).__name__}") from None
+    out = [_seed(s) for s in itertools.islice(iterator, MAX_SEEDS + 1)]
+    if len(out) > MAX_SEEDS:
+        raise InvalidRequestError("seeds: at most 1,000,000 seeds")
+    if not out:
+        raise InvalidRequestError("seeds: expected at least one seed")
+    return out
+
+
+def _threads(threads: Any) -> int:
+    value = _integer(threads, "threads")
+    if value < 0:
+        raise InvalidRequestError("threads: expected a non-negative integer (0: all cores)")
+    return value
+
+
+def _callback(progress: Any) -> Any:
+    if progress is not None and not callable(progress):
+        raise TypeError("progress: expected a callable or None")
+    return progress
+
+
+# ---- evaluations and traces ------------------------------------------------------------
+
+def evaluate(mission: MissionLike, software: SoftwareLike, seeds: SeedsLike = 1, threads: int = 0,
+             progress: Optional[Callable[[int, int], Any]] = None) -> np.ndarray:
+    """Scores of ``software`` on ``mission``, one per seed in seed order: exactly the bits
+    ``swarmdesign evaluate --mission M --seeds ... --json`` prints.
+
+    seeds: an integer, a range or any iterable of integers in [0, 2**64), or the CLI's "A-B";
+    at most 1,000,000. threads: workers (0: one per core); scores never depend on it.
+    progress(done, total) is called from this thread as batches finish. The GIL is released
+    while the runs go on; Ctrl-C raises KeyboardInterrupt within a batch."""
+    return _core.evaluate(_mission(mission), _software(software), _seeds(seeds), _threads(threads), _callback(progress))
+
+
+class Trace:
+    """One run tick by tick, as ``evaluate --trace FILE`` writes it (its columns, its ticks):
+    arrays of shape (ticks + 1, robots), row 0 being the placement.
+
+    x, y (m), yaw (rad): the pose after the physics of the tick; v_left, v_right (m/s) and
+    led (0xRRGGBB) are what was applied and shown during it (commanded at the tick before);
+    state: the FSM state after the transition check, or the tree's action counted depth-first
+    (-1: none); module: the two-digit id of the behaviour that ran (-1: none; the CSV's
+    ``behaviour`` column is module % 10); ground: the floor its conditions read (NaN at tick 0);
+    objective: the running objective per tick (shape ticks + 1); score: the run's score."""
+
+    __slots__ = ("mission", "software", "seed", "score", "x", "y", "yaw", "v_left", "v_right",
+                 "led", "state", "module", "ground", "objective")
+
+    def __init__(self, mission: Mission, software: ControlSoftware, seed: int, data: dict[str, Any]):
+        self.mission = mission
+        self.software = software
+        self.seed = seed
+        self.score: float = data["score"]
+        self.x: np.ndarray = data["x"]
+        self.y: np.ndarray = data["y"]
+        self.yaw: np.ndarray = data["yaw"]
+        self.v_left: np.ndarray = data["v_left"]
+        self.v_right: np.ndarray = data["v_right"]
+        self.led: np.ndarray = data["led"]
+        self.state: np.ndarray = data["state"]
+        self.module: np.ndarray = data["module"]
+        self.ground: np.ndarray = data["ground"]
+        self.objective: np.ndarray = data["objective"]
+
+    @property
+    def ticks(self) -> int:
+        """Ticks simulated (rows less the placement)."""
+        return int(self.x.shape[0]) - 1
+
+    @property
+    def robots(self) -> int:
+        return int(self.x.shape[1])
+
+    def to_pandas(self) -> Any:
+        """The trace in long format, one row per tick and robot (the CSV's rows): tick, robot,
+        x, y, yaw, v_left, v_right, state, module, ground, led, objective. Needs pandas."""
+        import pandas as pd
+        ticks, robots = self.x.shape
+        return pd.DataFrame({
+            "tick": np.repeat(np.arange(ticks), robots),
+            "robot": np.tile(np.arange(robots), ticks),
+            "x": self.x.ravel(), "y": self.y.ravel(), "yaw": self.yaw.ravel(),
+            "v_left": self.v_left.ravel(), "v_right": self.v_right.ravel(),
+            "state": self.state.ravel(), "module": self.module.ravel(), "ground": self.ground.ravel(),
+            "led": self.led.ravel(), "objective": np.repeat(self.objective, robots),
+        })
+
+    def __repr__(self) -> str:
+        return f"<swarmdesign.Trace {self.mission.name} seed {self.seed}: {self.ticks} ticks, {self.robots} robots, score {self.score!r}>"
+
+
+def trace(mission: MissionLike, software: SoftwareLike, seed: int = 1) -> Trace:
+    """One run recorded tick by tick: the run, and the score, of ``evaluate --seed S --trace``."""
+    m, s, seed = _mission(mission), _software(software), _seed(seed)
+    return Trace(m, s, seed, _core.trace(m, s, seed))
+
+
+# ---- designs ---------------------------------------------------------------------------
+
+def _names(value: Union[None, str, Iterable[str]], what: str) -> list[str]:
+    if value is None:
+        return []
+    if isinstance(value, str):
+        return [v for v in value.replace(",", " ").split() if v]
+    out = list(value)
+    for v in out:
+        if not isinstance(v, str):
+            raise TypeError(f"{what}: expected names, not {type(v).__name__}")
+    return out
+
+
+def _budget(budget: Any) -> int:
+    if isinstance(budget, bool):
+        raise TypeError("budget: expected an integer, not bool")
+    if isinstance(budget, (int, np.integer)):
+        return _core.parse_budget(str(int(budget)))
+    if isinstance(budget, (float, str)):  # "2000" as the CLI reads it; 2000.5, nan, inf refused in its words
+        return _core.parse_budget(str(budget))
+    raise TypeError(f"budget: expected an integer, not {type(budget).__name__}")
+
+
+class DesignResult:
+    """A finished design: ``best`` (ControlSoftware), ``score`` (its mean over every run it had,
+    the mission's units), ``folder`` and the whole ``report`` (as ``design --json`` prints it)."""
+
+    __slots__ = ("best", "score", "folder", "report")
+
+    def __init__(self, report: dict[str, Any]):
+        self.report = report
+        elites = report.get("elites") or []
+        self.best = ControlSoftware.parse(report["best"]["configuration"] if isinstance(report.get("best"), dict)
+                                          else elites[0]["configuration"])
+        self.score: float = elites[0]["mean_score"] if elites else math.nan
+        self.folder: str = report.get("folder", "")
+
+    def __repr__(self) -> str:
+        return f"<swarmdesign.DesignResult score {self.score!r} in {self.folder}: {self.best}>"
+
+
+def design(mission: MissionLike, budget: Union[int, str], *, architectures: Union[None, str, Iterable[str]] = None,
+           flavours: Union[None, str, Iterable[str]] = None, seed: Optional[int] = None,
+           folder: Union[None, str, "os.PathLike[str]"] = None, threads: int = 0,
+           progress: Optional[Callable[[dict[str, Any]], Any]] = None) -> DesignResult:
+    """Designs control software with Iterated F-Race, as ``swarmdesign design`` does, in-process.
+
+    architectures: "fsm", "bt" or both (None: all); flavours: any of FLAVOURS (None: all);
+    seed: the design's seed (None: a random one, in the report); same seed, same result, on any
+    number of threads. folder keeps the design (design.db after every race step; None:
+    ./design-<mission>-seed<S>). A folder that already holds this design is resumed: after
+    Ctrl-C (KeyboardInterrupt) or a kill, the same call ends exactly as an uninterrupted one.
+    progress(dict) is called from this thread after race steps (iteration, runs used, best)."""
+    seed_value = _core.random_seed() if seed is None else _seed(seed)
+    report = _core.design(_mission_reference(mission), _budget(budget), _names(architectures, "architectures"),
+                          _names(flavours, "flavours"), seed_value, "" if folder is None else os.fspath(folder),
+                          _threads(threads), _callback(progress))
+    return DesignResult(report)
+
+
+def resume_design(folder: Union[str, "os.PathLike[str]"], threads: int = 0,
+                  progress: Optional[Callable[[dict[str, Any]], Any]] = None) -> DesignResult:
+    """Continues the design kept in ``folder`` with the settings it was started with, as
+    ``design --resume DIR`` does (DesignFolderError, in its words, when it cannot)."""
+    return DesignResult(_core.resume_design(os.fspath(folder), _threads(threads), _callback(progress)))
+
+
+class Design:
+    """A design folder read back (``Design.open(folder)``), made by ``design``, ``run-design``,
+    an experiment or this module, finished or still running.
+
+    progress: dict as ``design-status --json`` prints it; elites, race_log and convergence:
+    DataFrames (lists of dicts without pandas); best / best_score: the best elite so far."""
+
+    def __init__(self, data: dict[str, Any]):
+        self._data = data
+        self.folder: str = data["folder"]
+        self.method: str = data["method"]
+        self.progress: dict[str, Any] = data.get("progress") or data.get("document") or {}
+
+    @classmethod
+    def open(cls, folder: Union[str, "os.PathLike[str]"]) -> "Design":
+        """Reads the design in ``folder``; DesignFolderError when it holds none."""
+        return cls(_core.read_design(os.fspath(folder)))
+
+    @property
+    def convergence(self) -> Any:
+        """One row per finished iteration: iteration, runs_used, best_id, best_score (the best
+        elite's mean over every run it had so far, the mission's units)."""
+        return _table(list(self._data.get("convergence", [])), ["iteration", "runs_used", "best_id", "best_score"])
+
+    @property
+    def elites(self) -> Any:
+        """The current elites, best first: id, command_line, mean_score, runs."""
+        return _table(list(self.progress.get("elites", [])), ["id", "command_line", "mean_score", "runs"])
+
+    @property
+    def race_log(self) -> Any:
+        """Every race: one row per (iteration, configuration) with its mean in that race,
+        whether it was an elite before, when it was dropped (instances seen) and whether it
+        ended among the iteration's elites."""
+        rows = []
+        for race in self._data.get("race_log", []):
+            elites = race.get("elites") or []
+            for member in race.get("members", []):
+                row = {"iteration": race.get("iteration"), "race_budget": race.get("race_budget"),
+                       "instances": len(race.get("instances", []))}
+                configuration = member.get("configuration", member)
+                row.update({k: v for k, v in configuration.items() if not isinstance(v, (dict, list))})
+                row.update({k: v for k, v in member.items() if k != "configuration" and not isinstance(v, (dict, list))})
+                row["survived"] = row.get("id") in elites
+                rows.append(row)
+        return _table(rows)
+
+    @property
+    def race_log_document(self) -> list[dict[str, Any]]:
+        """The race log as ``status --json`` gives it."""
+        return list(self._data.get("race_log", []))
+
+    @property
+    def best(self) -> Optional[ControlSoftware]:
+        best = self.progress.get("best")
+        if isinstance(best, dict) and best.get("command_line"):
+            return ControlSoftware.parse(best["command_line"])
+        text = self.progress.get("control_software") or self.progress.get("best_configuration")
+        return ControlSoftware.parse(text) if isinstance(text, str) else None
+
+    @property
+    def best_score(self) -> Optional[float]:
+        best = self.progress.get("best")
+        return best.get("mean_score") if isinstance(best, dict) else None
+
+    def __repr__(self) -> str:
+        return f"<swarmdesign.Design {self.method} in {self.folder}>"
+
+
+# ---- experiments and accounts ----------------------------------------------------------
+
+class ExperimentReport:
+    """An experiment's report document (src/experiments/REPORT_FORMAT.md): the numbers and
+    statistics ``swarmdesign report`` computes, as tables. ``document`` is the whole dict."""
+
+    def __init__(self, document: dict[str, Any]):
+        self.document = document
+
+    @classmethod
+    def open(cls, path: Union[str, "os.PathLike[str]"]) -> "ExperimentReport":
+        """Reads a report.json (or the folder ``report --out DIR`` wrote), at most 64 MiB."""
+        path = os.fspath(path)
+        if os.path.isdir(path):
+            path = os.path.join(path, "report.json")
+        limit = 64 << 20
+        # Opened without blocking and checked on what was opened: a FIFO or a device is refused.
+        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
+        with os.fdopen(fd, "rb") as f:
+            if not stat.S_ISREG(os.fstat(fd).st_mode):
+                raise InvalidRequestError(f"report '{path}': not a regular file")
+            text = f.read(limit + 1)
+        if len(text) > limit:
+            raise InvalidRequestError(f"report '{path}': larger than 64 MiB")
+        return cls(json.loads(text))
+
+    def _rows(self, key: str) -> Any:
+        return _table(list(self.document.get(key) or []))
+
+    @property
+    def designs(self) -> Any:
+        """One row per design: mission, condition, replicate, seed, budget, score, design_score, ..."""
+        rows = [{k: v for k, v in d.items() if not isinstance(v, (dict, list))} for d in self.document.get("designs", [])]
+        return _table(rows)
+
+    @property
+    def runs(self) -> Any:
+        """One row per assessment run: design id, mission, condition, replicate, seed, score."""
+        rows = []
+        for d in self.document.get("designs", []):
+            for seed, score in zip(d.get("assessment_seeds", []), d.get("scores", [])):
+                rows.append({"design": d.get("id"), "mission": d.get("mission"), "condition": d.get("condition"),
+                             "replicate": d.get("replicate"), "seed": seed, "score": score})
+        return _table(rows, ["design", "mission", "condition", "replicate", "seed", "score"])
+
+    @property
+    def boxes(self) -> Any:
+        return self._rows("boxes")
+
+    @property
+    def wilcoxon(self) -> Any:
+        return self._rows("wilcoxon")
+
+    @property
+    def friedman(self) -> Optional[dict[str, Any]]:
+        return self.document.get("friedman")
+
+    @property
+    def module_frequency(self) -> Any:
+        return self._rows("module_frequency")
+
+    @property
+    def architectures(self) -> Any:
+        return self._rows("architectures")
+
+
+class Account:
+    """A SwarmDesign home as the signed-in user sees it (``swarmdesign sign-in`` made the
+    session): projects, their designs and experiments, reports. It only reads, through the
+    store every CLI command opens. home: the SwarmDesign home (None: $SWARMDESIGN_HOME or the
+    default)."""
+
+    def __init__(self, home: Union[None, str, "os.PathLike[str]"] = None):
+        self.home: Optional[str] = None if home is None else os.fspath(home)
+
+    def projects(self) -> Any:
+        return _core.account_projects(self.home)
+
+    def designs(self, project: Optional[str] = None) -> Any:
+        """The project's designs (the active project when None), one row each."""
+        return _table(_core.account_designs(self.home, project))
+
+    def design(self, design_id: int, project: Optional[str] = None) -> Design:
+        """A design of the project opened from its folder."""
+        for row in _core.account_designs(self.home, project):
+            if row.get("id") == design_id:
+                return Design.open(row["folder"])
+        raise NotFoundError(f"design {design_id}: no such design in the project")
+
+    def experiments(self, project: Optional[str] = None) -> Any:
+        return _core.account_experiments(self.home, project)
+
+    def experiment_report(self, experiment: str, project: Optional[str] = None) -> ExperimentReport:
+        """The experiment's report as ``swarmdesign report --json`` computes it."""
+        return ExperimentReport(_core.experiment_report(experiment, self.home, project))

@@ -1,0 +1,147 @@
+// Designs from Python: Iterated F-Race run in-process by the job the CLI's `design` runs
+// (app/design_job.hpp: prepared, checkpointed into DIR/design.db, resumable), and any design
+// folder read back (its progress, race log and convergence, as `design-status --json` and
+// `status --json` give them).
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <filesystem>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/cancel_token.hpp"
+#include "app/design_job.hpp"
+#include "app/design_method.hpp"
+#include "app/documents.hpp"
+#include "app/errors.hpp"
+#include "app/inputs.hpp"
+#include "design/methods.hpp"
+#include "missions/catalogue.hpp"
+#include "python/bindings.hpp"
+#include "python/interruptible.hpp"
+#include "python/json_objects.hpp"
+#include "storage/design_status.hpp"
+#include "storage/design_store.hpp"
+
+namespace sd::python {
+
+namespace py = pybind11;
+
+namespace {
+
+/// Hands each race step's progress from the job's thread to the Python thread that polls.
+class ProgressRelay final : public app::DesignObserver {
+ public:
+  explicit ProgressRelay(bool maximise) : maximise_(maximise) {}
+  void progress(const design::Progress& p) override {
+    const std::lock_guard lock(mutex_);
+    latest_ = app::progress_document(p, maximise_);
+  }
+  std::optional<nlohmann::json> take() {
+    const std::lock_guard lock(mutex_);
+    std::optional<nlohmann::json> out = std::move(latest_);
+    latest_.reset();
+    return out;
+  }
+
+ private:
+  bool maximise_;
+  std::mutex mutex_;
+  std::optional<nlohmann::json> latest_;
+};
+
+design::DesignSpaceRequest space_request(const std::vector<std::string>& architectures, const std::vector<std::string>& flavours) {
+  design::DesignSpaceRequest request;
+  for (const auto& a : architectures) {
+    if (a == "fsm") request.fsm = true;
+    else if (a == "bt") request.bt = true;
+    else throw app::InvalidRequest("architecture '" + a + "': expected fsm or bt");
+  }
+  for (const auto& f : flavours) {
+    const auto flavour = flavour_from_name(f);
+    if (!flavour) throw app::InvalidRequest("flavour '" + f + "': expected chocolate, tuttifrutti, coconut, maple or arlequin");
+    request.flavours.push_back(*flavour);
+  }
+  return request;
+}
+
+py::object run_prepared(app::PreparedDesign& prepared, unsigned threads, const py::object& progress) {
+  ProgressRelay relay(prepared.mission.objective.direction == Direction::Maximize);
+  app::CancelToken token;
+  app::DesignOutcome outcome;
+  run_interruptibly(
+      [&] { outcome = app::run_design(prepared, {.threads = threads, .observer = &relay, .cancel = &token}); },
+      [&] { token.cancel(); },
+      [&] {
+        auto latest = relay.take();
+        if (latest && !progress.is_none()) progress(to_python(*latest));
+      });
+  if (!outcome.report) throw std::runtime_error("the design in " + prepared.folder.string() + " stopped before it finished");
+  py::dict report = to_python(app::design_report_document(*outcome.report));
+  report["notes_from_choice"] = prepared.choice.notes;
+  return report;
+}
+
+py::object design(const std::string& mission, long long budget, const std::vector<std::string>& architectures,
+                  const std::vector<std::string>& flavours, std::uint64_t seed, const std::string& folder, unsigned threads,
+                  const py::object& progress) {
+  const app::NewDesignSettings settings{mission, budget, space_request(architectures, flavours), seed};
+  if (!folder.empty() && std::filesystem::exists(storage::DesignStore::file_in(folder))) {
+    // The folder holds a design already: go on with it, provided it is the one asked for.
+    const app::PreparedDesign asked = app::check_new_design(settings);
+    app::PreparedDesign stored = app::prepare_resume(folder, true);
+    if (stored.mission_reference != asked.mission_reference || stored.options.max_experiments != asked.options.max_experiments ||
+        stored.options.seed != asked.options.seed || stored.choice.architectures_text() != asked.choice.architectures_text() ||
+        stored.choice.flavours_text() != asked.choice.flavours_text())
+      throw storage::DesignFolderError("the design in " + folder + " was started with other settings (mission " +
+                                       stored.mission_reference + ", budget " + std::to_string(stored.options.max_experiments) +
+                                       ", seed " + std::to_string(stored.options.seed) + ", " +
+                                       stored.choice.architectures_text() + " / " + stored.choice.flavours_text() +
+                                       "); resume it with resume_design() or open it with Design.open()");
+    return run_prepared(stored, threads, progress);
+  }
+  app::PreparedDesign prepared = app::prepare_new_design(settings, folder);
+  return run_prepared(prepared, threads, progress);
+}
+
+py::object resume_design(const std::string& folder, unsigned threads, const py::object& progress) {
+  app::PreparedDesign prepared = app::prepare_resume(folder);
+  return run_prepared(prepared, threads, progress);
+}
+
+py::dict read_design(const std::string& folder) {
+  py::dict out;
+  out["folder"] = std::filesystem::absolute(folder).lexically_normal().string();
+  const std::filesystem::path evolution = std::filesystem::path(folder) / "evostick.json";
+  if (!std::filesystem::exists(storage::DesignStore::file_in(folder)) && std::filesystem::exists(evolution)) {
+    const app::DesignMethod& method = app::design_method(design::kEvoStick.name);
+    out["method"] = std::string(design::kEvoStick.name);
+    out["document"] = to_python(method.document(folder));
+    out["convergence"] = to_python(app::convergence_document(method.convergence(folder)));
+    return out;
+  }
+  out["method"] = std::string(design::kAutoMoDe.name);
+  out["progress"] = to_python(app::stored_progress_document(storage::read_design_progress(folder)));
+  out["race_log"] = to_python(app::race_log_document(storage::read_race_log(folder)));
+  out["convergence"] = to_python(app::convergence_document(storage::read_convergence(folder)));
+  return out;
+}
+
+}  // namespace
+
+void bind_designs(py::module_& m) {
+  m.def("design", &design, py::arg("mission"), py::arg("budget"), py::arg("architectures"), py::arg("flavours"),
+        py::arg("seed"), py::arg("folder"), py::arg("threads") = 0, py::arg("progress") = py::none(),
+        "Iterated F-Race in-process, as `swarmdesign design` runs it; the final report document.");
+  m.def("resume_design", &resume_design, py::arg("folder"), py::arg("threads") = 0, py::arg("progress") = py::none(),
+        "Continues the design kept in a folder (as `design --resume DIR`); the final report document.");
+  m.def("read_design", &read_design, py::arg("folder"), "A design folder's progress, race log and convergence.");
+  m.def("parse_budget", &app::parse_budget, py::arg("text"), "A design budget, read as the CLI reads --budget.");
+  m.def("parse_seed", &app::parse_seed, py::arg("text"), "A seed, read as the CLI reads --seed.");
+  m.def("parse_seed_range", &app::parse_seed_range, py::arg("text"), "Seeds \"S\" or \"A-B\", read as the CLI reads --seeds.");
+  m.def("random_seed", &app::random_seed, "A fresh seed in 1..2^31-1, as a design without --seed gets.");
+}
+
+}  // namespace sd::python
