@@ -18,6 +18,8 @@ packages=(
   slurmctld slurmd munge openssh-server  # the cluster tests start a one-node Slurm and an sshd
   clang libclang-rt-14-dev  # scripts/sanitizers.sh: ASan, UBSan, TSan and libFuzzer runtimes
   clang-tidy  # scripts/tidy.sh, with the repository's .clang-tidy
+  pybind11-dev python3-dev  # the Python module swarmdesign (build/python; src/python)
+  python3-numpy python3-pytest python3-pandas python3-matplotlib  # its arrays, tests, tables, examples
 )
 # Node.js and npm bundle the web app's front end; a machine that has them already keeps its own.
 if ! command -v npm >/dev/null 2>&1; then packages+=(nodejs npm); fi
