@@ -52,13 +52,15 @@ __version__: str = _core.__version__
 __all__ = [
     "AccessDeniedError", "Account", "ConfigError", "ConflictError", "ControlSoftware", "Design",
     "DesignFolderError", "DesignResult", "ExperimentReport", "ExportError", "FLAVOURS",
-    "InvalidRequestError", "MAX_SEEDS", "Mission", "MissionError", "NotFoundError",
+    "InvalidRequestError", "MAX_SEEDS", "MAX_SEED_BOUND", "Mission", "MissionError", "NotFoundError",
     "SwarmDesignError", "Trace", "design", "evaluate", "missions", "module_catalogue",
     "resume_design", "trace",
 ]
 
 #: The most seeds one evaluate() takes, as ``evaluate --seeds A-B`` does.
 MAX_SEEDS = 1_000_000
+#: Seeds are below this bound, as ``--seed`` reads them (at most 19 decimal digits).
+MAX_SEED_BOUND = 10**19
 #: The five AutoMoDe flavours, as ``--legacy-flavour`` and the design flags name them.
 FLAVOURS = ("chocolate", "tuttifrutti", "coconut", "maple", "arlequin")
 
@@ -125,7 +127,7 @@ def _integer(value: Any, what: str) -> int:
 
 def _seed(value: Any) -> int:
     seed = _integer(value, "seed")
-    if not 0 <= seed < 2**64:
+    if not 0 <= seed < MAX_SEED_BOUND:  # the CLI's one reading of a seed (app/inputs.hpp): 19 digits at most
         raise InvalidRequestError(f"seed '{seed}': expected a non-negative integer")
     return seed
 
@@ -173,7 +175,7 @@ def evaluate(mission: MissionLike, software: SoftwareLike, seeds: SeedsLike = 1,
     """Scores of ``software`` on ``mission``, one per seed in seed order: exactly the bits
     ``swarmdesign evaluate --mission M --seeds ... --json`` prints.
 
-    seeds: an integer, a range or any iterable of integers in [0, 2**64), or the CLI's "A-B";
+    seeds: an integer, a range or any iterable of integers in [0, 10**19), or the CLI's "A-B";
     at most 1,000,000. threads: workers (0: one per core); scores never depend on it.
     progress(done, total) is called from this thread as batches finish. The GIL is released
     while the runs go on; Ctrl-C raises KeyboardInterrupt within a batch."""
@@ -337,25 +339,23 @@ class Design:
 
     @property
     def elites(self) -> Any:
-        """The current elites, best first: id, command_line, mean_score, runs."""
-        return _table(list(self.progress.get("elites", [])), ["id", "command_line", "mean_score", "runs"])
+        """The current elites, best first: id, configuration, mean_score (over all its runs), runs."""
+        return _table(list(self.progress.get("elites", [])), ["id", "configuration", "mean_score", "runs"])
 
     @property
     def race_log(self) -> Any:
-        """Every race: one row per (iteration, configuration) with its mean in that race,
-        whether it was an elite before, when it was dropped (instances seen) and whether it
-        ended among the iteration's elites."""
+        """Every race: one row per (iteration, configuration) with its mean and runs in that race,
+        whether it was an elite before (elite), when it was dropped (eliminated_after: instances
+        seen, None if never) and whether it ended among the iteration's elites (survived)."""
         rows = []
         for race in self._data.get("race_log", []):
             elites = race.get("elites") or []
-            for member in race.get("members", []):
-                row = {"iteration": race.get("iteration"), "race_budget": race.get("race_budget"),
-                       "instances": len(race.get("instances", []))}
-                configuration = member.get("configuration", member)
-                row.update({k: v for k, v in configuration.items() if not isinstance(v, (dict, list))})
-                row.update({k: v for k, v in member.items() if k != "configuration" and not isinstance(v, (dict, list))})
-                row["survived"] = row.get("id") in elites
-                rows.append(row)
+            for member in race.get("configurations", []):
+                rows.append({"iteration": race.get("iteration"), "race_budget": race.get("race_budget"),
+                             "instances": len(race.get("instances", [])), "id": member.get("id"),
+                             "configuration": member.get("configuration"), "mean_score": member.get("mean_score"),
+                             "runs": member.get("runs"), "elite": member.get("elite"),
+                             "eliminated_after": member.get("eliminated_after"), "survived": member.get("id") in elites})
         return _table(rows)
 
     @property
@@ -366,8 +366,8 @@ class Design:
     @property
     def best(self) -> Optional[ControlSoftware]:
         best = self.progress.get("best")
-        if isinstance(best, dict) and best.get("command_line"):
-            return ControlSoftware.parse(best["command_line"])
+        if isinstance(best, dict) and best.get("configuration"):
+            return ControlSoftware.parse(best["configuration"])
         text = self.progress.get("control_software") or self.progress.get("best_configuration")
         return ControlSoftware.parse(text) if isinstance(text, str) else None
 
