@@ -118,7 +118,10 @@ void bind_missions_and_software(py::module_& m) {
           }, py::arg("flavour") = py::none(),
           "The string an ARGoS3-AutoMoDe code base reads (as `export --argos`): (text, flavour, reader).\n"
           "ExportError when that code base cannot read it.")
-      .def("__eq__", [](const ControlSoftware& a, const ControlSoftware& b) { return a == b; })
+      .def("__eq__", [](const ControlSoftware& a, const py::object& b) -> py::object {
+            if (!py::isinstance<ControlSoftware>(b)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+            return py::bool_(a == b.cast<const ControlSoftware&>());
+          })
       .def("__hash__", [](const ControlSoftware& s) { return py::hash(py::str(to_config_string(s))); })
       .def("__repr__", [](const ControlSoftware& s) { return "<swarmdesign.ControlSoftware " + to_config_string(s) + ">"; });
 }
