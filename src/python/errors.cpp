@@ -85,7 +85,8 @@ void bind_errors(py::module_& module) {
                                "A design folder that cannot be used as asked (not a design, damaged, finished, ...).",
                                py::make_tuple(base));
 
-  py::register_exception_translator([](std::exception_ptr error) {
+  // pybind11's translator is a plain function pointer taking the exception_ptr by value.
+  py::register_exception_translator([](std::exception_ptr error) {  // NOLINT(performance-unnecessary-value-param)
     if (!error) return;
     const Classes& k = classes();
     try {
