@@ -52,13 +52,15 @@ __version__: str = _core.__version__
 __all__ = [
     "AccessDeniedError", "Account", "ConfigError", "ConflictError", "ControlSoftware", "Design",
     "DesignFolderError", "DesignResult", "ExperimentReport", "ExportError", "FLAVOURS",
-    "InvalidRequestError", "MAX_SEEDS", "MAX_SEED_BOUND", "Mission", "MissionError", "NotFoundError",
+    "InvalidRequestError", "MAX_SEEDS", "MAX_SEED_BOUND", "MAX_THREADS", "Mission", "MissionError", "NotFoundError",
     "SwarmDesignError", "Trace", "design", "evaluate", "missions", "module_catalogue",
     "resume_design", "trace",
 ]
 
 #: The most seeds one evaluate() takes, as ``evaluate --seeds A-B`` does.
 MAX_SEEDS = 1_000_000
+#: The most worker threads one call may ask for.
+MAX_THREADS = 1024
 #: Seeds are below this bound, as ``--seed`` reads them (at most 19 decimal digits).
 MAX_SEED_BOUND = 10**19
 #: The five AutoMoDe flavours, as ``--legacy-flavour`` and the design flags name them.
@@ -159,6 +161,8 @@ def _threads(threads: Any) -> int:
     value = _integer(threads, "threads")
     if value < 0:
         raise InvalidRequestError("threads: expected a non-negative integer (0: all cores)")
+    if value > MAX_THREADS:  # each is a thread and a cached simulation: a typo must not exhaust the machine
+        raise InvalidRequestError(f"threads: at most {MAX_THREADS}")
     return value
 
 

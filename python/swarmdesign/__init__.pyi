@@ -9,6 +9,7 @@ import numpy.typing as npt
 __version__: str
 MAX_SEEDS: int
 MAX_SEED_BOUND: int
+MAX_THREADS: int
 FLAVOURS: tuple[str, ...]
 
 class SwarmDesignError(Exception): ...

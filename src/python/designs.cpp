@@ -68,6 +68,8 @@ design::DesignSpaceRequest space_request(const std::vector<std::string>& archite
 }
 
 py::object run_prepared(app::PreparedDesign& prepared, unsigned threads, const py::object& progress) {
+  constexpr unsigned kMaxThreads = 1024;  // as evaluate: each worker is a thread and a simulation
+  if (threads > kMaxThreads) throw app::InvalidRequest("threads: at most " + std::to_string(kMaxThreads));
   ProgressRelay relay(prepared.mission.objective.direction == Direction::Maximize);
   app::CancelToken token;
   app::DesignOutcome outcome;

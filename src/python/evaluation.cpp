@@ -28,12 +28,15 @@ namespace {
 
 /// What `evaluate --seeds A-B` accepts at most, for any list of seeds.
 constexpr std::size_t kMaxSeeds = 1'000'000;
+/// Each worker is a thread with its own simulation: a typo must not exhaust the machine.
+constexpr int kMaxThreads = 1024;
 
 py::array_t<double> evaluate(const std::shared_ptr<Mission>& mission, const std::shared_ptr<ControlSoftware>& software,
                              const std::vector<std::uint64_t>& seeds, int threads, const py::object& progress) {
   if (seeds.empty()) throw app::InvalidRequest("seeds: expected at least one seed");
   if (seeds.size() > kMaxSeeds) throw app::InvalidRequest("seeds: at most 1,000,000 seeds");
   if (threads < 0) throw app::InvalidRequest("threads: expected a non-negative integer (0: all cores)");
+  if (threads > kMaxThreads) throw app::InvalidRequest("threads: at most " + std::to_string(kMaxThreads));
   std::vector<double> scores;
   app::CancelToken token;
   std::atomic<std::size_t> done{0};

@@ -120,6 +120,12 @@ def test_wrong_types():
         sd.evaluate("aac", RANDOM_WALK, 1, threads="many")
     with pytest.raises(sd.InvalidRequestError):
         sd.evaluate("aac", RANDOM_WALK, 1, threads=-1)
+    with pytest.raises(sd.InvalidRequestError, match="at most 1024"):
+        sd.evaluate("aac", RANDOM_WALK, range(10**6), threads=10**6)
+    with pytest.raises(sd.InvalidRequestError, match="at most 1024"):
+        sd._core.evaluate(sd.Mission.builtin("aac"), sd.ControlSoftware.parse(RANDOM_WALK), [1], 10**6)
+    with pytest.raises(sd.MissionError):
+        sd.Mission.load("/tmp")  # a folder
     with pytest.raises(TypeError):
         sd.evaluate("aac", RANDOM_WALK, 1, progress=3)
     with pytest.raises(TypeError):
