@@ -166,6 +166,29 @@ def _threads(threads: Any) -> int:
     return value
 
 
+# The engine's worker pool is threads of this process: a child made by fork() has none of them,
+# and a job there would wait for them for ever. Such a child is told so instead (use the
+# "spawn" or "forkserver" start method of multiprocessing, or evaluate before any fork).
+_fork = {"pool": 0, "orphaned": False}
+
+
+def _before_fork() -> None:
+    _fork["pool"] = _core.pool_threads()
+
+
+def _after_fork_in_child() -> None:
+    _fork["orphaned"] = _fork["orphaned"] or _fork["pool"] > 0
+
+
+os.register_at_fork(before=_before_fork, after_in_child=_after_fork_in_child)
+
+
+def _check_fork() -> None:
+    if _fork["orphaned"]:
+        raise SwarmDesignError("this process was forked after SwarmDesign's worker threads started, and a fork has none "
+                               "of them: use multiprocessing's 'spawn' or 'forkserver' start method")
+
+
 def _callback(progress: Any) -> Any:
     if progress is not None and not callable(progress):
         raise TypeError("progress: expected a callable or None")
@@ -183,6 +206,7 @@ def evaluate(mission: MissionLike, software: SoftwareLike, seeds: SeedsLike = 1,
     at most 1,000,000. threads: workers (0: one per core); scores never depend on it.
     progress(done, total) is called from this thread as batches finish. The GIL is released
     while the runs go on; Ctrl-C raises KeyboardInterrupt within a batch."""
+    _check_fork()
     return _core.evaluate(_mission(mission), _software(software), _seeds(seeds), _threads(threads), _callback(progress))
 
 
@@ -303,6 +327,7 @@ def design(mission: MissionLike, budget: Union[int, str], *, architectures: Unio
     ./design-<mission>-seed<S>). A folder that already holds this design is resumed: after
     Ctrl-C (KeyboardInterrupt) or a kill, the same call ends exactly as an uninterrupted one.
     progress(dict) is called from this thread after race steps (iteration, runs used, best)."""
+    _check_fork()
     seed_value = _core.random_seed() if seed is None else _seed(seed)
     report = _core.design(_mission_reference(mission), _budget(budget), _names(architectures, "architectures"),
                           _names(flavours, "flavours"), seed_value, "" if folder is None else os.fspath(folder),
@@ -314,6 +339,7 @@ def resume_design(folder: Union[str, "os.PathLike[str]"], threads: int = 0,
                   progress: Optional[Callable[[dict[str, Any]], Any]] = None) -> DesignResult:
     """Continues the design kept in ``folder`` with the settings it was started with, as
     ``design --resume DIR`` does (DesignFolderError, in its words, when it cannot)."""
+    _check_fork()
     return DesignResult(_core.resume_design(os.fspath(folder), _threads(threads), _callback(progress)))
 
 

@@ -16,6 +16,7 @@
 #include "app/cancel_token.hpp"
 #include "app/errors.hpp"
 #include "app/evaluation_job.hpp"
+#include "core/executor.hpp"
 #include "evaluation/simulation.hpp"
 #include "python/bindings.hpp"
 #include "python/interruptible.hpp"
@@ -204,6 +205,8 @@ void bind_evaluation(py::module_& m) {
   m.def("evaluate", &evaluate, py::arg("mission"), py::arg("software"), py::arg("seeds"), py::arg("threads") = 0,
         py::arg("progress") = py::none(),
         "Scores per seed, in seed order, the bits `swarmdesign evaluate` prints (app::score_seeds).");
+  m.def("pool_threads", [] { return Executor::shared().size(); },
+        "Threads in the process's worker pool now (a child forked after they started has none).");
   m.def("trace", &trace, py::arg("mission"), py::arg("software"), py::arg("seed"),
         "One run recorded tick by tick (the run and score of `evaluate --trace`), as arrays.");
 }

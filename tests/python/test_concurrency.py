@@ -86,3 +86,22 @@ def test_two_threads_evaluate_at_once():
     # And the scores do not depend on it.
     assert (sd.evaluate("aac", RANDOM_WALK, range(1, 161), threads=1) ==
             sd.evaluate("aac", RANDOM_WALK, range(1, 161))).all()
+
+
+def test_a_forked_child_is_told_rather_than_left_waiting():
+    code = textwrap.dedent(f"""
+        import os, sys
+        import swarmdesign as sd
+        sd.evaluate('aac', {RANDOM_WALK!r}, '1-4', threads=2)   # the pool's threads start
+        pid = os.fork()
+        if pid == 0:
+            try:
+                sd.evaluate('aac', {RANDOM_WALK!r}, '1-4', threads=2)
+                os._exit(3)
+            except sd.SwarmDesignError as error:
+                os._exit(0 if "spawn" in str(error) else 4)
+        _, status = os.waitpid(pid, 0)
+        print(os.waitstatus_to_exitcode(status))
+    """)
+    process = subprocess.run([PYTHON, "-c", code], capture_output=True, text=True, timeout=60, env=python_env())
+    assert process.stdout.split() == ["0"], process.stderr
