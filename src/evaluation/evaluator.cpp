@@ -55,7 +55,7 @@ void ThreadedEvaluator::evaluate(const Mission& mission, std::span<const Evaluat
       }
       simulation = slot.unkeyed.get();
     }
-    scores[i] = simulation->run(task.seed);
+    scores[i] = simulation->run(task.seed, nullptr, task.robot);
   });
 }
 

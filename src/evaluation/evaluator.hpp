@@ -26,6 +26,8 @@ struct EvaluationTask {
   /// next batches of the same evaluator (a design's configuration id), so a backend may keep
   /// their simulation built between batches. -1: no such promise.
   std::int64_t key = -1;
+  /// The robot model of this run: a pseudo-reality (reality/); null: the mission's own.
+  const RobotModel* robot = nullptr;
 };
 
 class Evaluator {

@@ -7,6 +7,7 @@ namespace sd {
 
 Simulation::Simulation(const Mission& mission, const ControlSoftware& software)
     : mission_(&mission),
+      robot_(mission.robot),
       software_(software),
       controller_(software_, mission.robots, mission.arlequin_modules.get()),
       objective_(mission) {
@@ -21,8 +22,10 @@ Simulation::Simulation(const Mission& mission, const ControlSoftware& software)
   sensors_.camera = inputs & kCameraInput;
 }
 
-void Simulation::reset(std::uint64_t seed) {
+void Simulation::reset(std::uint64_t seed, const RobotModel* robot) {
+  robot_ = robot != nullptr ? *robot : mission_->robot;
   rng_.reseed(seed);
+  swarm_.deviations.draw(robot_, swarm_.size, seed);
   tick_ = 0;
   place_robots(mission_->arena, [this](Rng& rng) { return mission_->draw_start(rng); }, swarm_, rng_);
   const std::vector<StartPose>& given = mission_->start_poses;
@@ -48,8 +51,9 @@ void Simulation::step() {
         ((in & kProximityInput) ? SwarmState::kDemandProximity : 0) | ((in & kLightInput) ? SwarmState::kDemandLight : 0) |
         ((in & kCameraInput) ? SwarmState::kDemandCamera : 0));
   }
-  sense(m.arena, m.robot, swarm_, rng_, sensors_);
-  const double wheel_noise = m.robot.wheel_noise;
+  sense(m.arena, robot_, swarm_, rng_, sensors_);
+  const double wheel_noise = robot_.wheel_noise;
+  const RobotDeviations& deviations = swarm_.deviations;
   for (int i = 0; i < swarm_.size; ++i) {
     const auto r = static_cast<std::size_t>(i);
     reference_[r].update(swarm_, i);
@@ -57,6 +61,10 @@ void Simulation::step() {
     // The wheel actuator takes cm/s; its noise multiplies each speed by 1 + N(0, s), drawn
     // at every control step (a stopped wheel stays stopped, so no draw is needed).
     double left = a.left_cm * 0.01, right = a.right_cm * 0.01;
+    if (deviations.active) {  // this robot's own wheels (a pseudo-reality)
+      left *= deviations.wheel_left[r];
+      right *= deviations.wheel_right[r];
+    }
     if (wheel_noise > 0.0) {
       if (left != 0.0) left *= 1.0 + wheel_noise * rng_.normal();
       if (right != 0.0) right *= 1.0 + wheel_noise * rng_.normal();
@@ -68,8 +76,8 @@ void Simulation::step() {
   objective_.post_step(swarm_, tick_, rng_);
 }
 
-double Simulation::run(std::uint64_t seed, TickObserver* observer) {
-  reset(seed);
+double Simulation::run(std::uint64_t seed, TickObserver* observer, const RobotModel* robot) {
+  reset(seed, robot);
   if (observer) observer->on_tick(*this);
   while (!finished()) {
     step();

@@ -36,16 +36,19 @@ class Simulation {
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
 
-  /// A whole evaluation: the mission's natural score for this seed.
-  double run(std::uint64_t seed, TickObserver* observer = nullptr);
+  /// A whole evaluation: the mission's natural score for this seed. `robot`: the robot
+  /// model of this run (a pseudo-reality); null: the mission's own (the design model).
+  double run(std::uint64_t seed, TickObserver* observer = nullptr, const RobotModel* robot = nullptr);
 
-  void reset(std::uint64_t seed);
+  void reset(std::uint64_t seed, const RobotModel* robot = nullptr);
   void step();
   bool finished() const { return tick_ >= mission_->ticks; }
 
   int tick() const { return tick_; }
   double score() const { return objective_.value(); }
   const Mission& mission() const { return *mission_; }
+  /// The robot model of the current run.
+  const RobotModel& robot_model() const { return robot_; }
   const SwarmState& swarm() const { return swarm_; }
   int fsm_state(int robot) const { return controller_.current_state(robot); }
   const ControlSoftware& software() const { return software_; }
@@ -57,6 +60,7 @@ class Simulation {
 
  private:
   const Mission* mission_;
+  RobotModel robot_;
   ControlSoftware software_;
   SwarmState swarm_;
   Physics physics_;

@@ -125,14 +125,15 @@ void read_arena(const Field& f, Mission& m) {
 }
 
 void read_robot_model(const Field& f, RobotModel& r) {
-  f.only({"rab_range", "rab_loss", "wheel_noise", "proximity_noise", "light_noise", "ground_noise", "camera_range"});
-  if (f.has("rab_range")) r.rab_range = f.at("rab_range").positive();
-  if (f.has("rab_loss")) r.rab_loss = f.at("rab_loss").probability();
-  if (f.has("wheel_noise")) r.wheel_noise = f.at("wheel_noise").non_negative();
-  if (f.has("proximity_noise")) r.proximity_noise = f.at("proximity_noise").non_negative();
-  if (f.has("light_noise")) r.light_noise = f.at("light_noise").non_negative();
-  if (f.has("ground_noise")) r.ground_noise = f.at("ground_noise").non_negative();
-  if (f.has("camera_range")) r.camera_range = f.at("camera_range").positive();
+  f.expect_object();
+  for (const auto& [key, value] : f.raw().items()) {
+    const auto knob = std::find_if(kRobotKnobs.begin(), kRobotKnobs.end(), [&](const RobotKnob& k) { return k.name == key; });
+    if (knob == kRobotKnobs.end()) f.at(key).fail("unknown field");
+    const double v = f.at(key).number();
+    const std::string_view error = knob_domain_error(knob->domain, v);
+    if (!error.empty()) f.at(key).fail(std::string(error));
+    r.*(knob->member) = v;
+  }
 }
 
 /// {"loop_functions": {"label", "library", "params": {attribute: number, text or boolean}}}.

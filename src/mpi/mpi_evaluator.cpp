@@ -129,7 +129,8 @@ void MpiEvaluator::evaluate(const Mission& mission, std::span<const EvaluationTa
                                        tasks.size() - next);
     WorkChunk chunk{id_, batch, next, threads_, mission.digest, {}};
     for (std::size_t i = next; i < next + count; ++i)
-      chunk.tasks.push_back({tasks[i].key, tasks[i].seed, text_of(tasks[i].software)});
+      chunk.tasks.push_back({tasks[i].key, tasks[i].seed, text_of(tasks[i].software),
+                             tasks[i].robot ? std::optional<RobotModel>(*tasks[i].robot) : std::nullopt});
     send(rank, kWorkTag, encode(chunk));
     next += count;
     ++in_flight[static_cast<std::size_t>(rank)];

@@ -91,7 +91,7 @@ class Worker {
         last_text = &task.software;
         software = &unkeyed.back();
       }
-      tasks.push_back({software, task.seed, task.key});
+      tasks.push_back({software, task.seed, task.key, task.robot ? &*task.robot : nullptr});
     }
     std::vector<double> scores(tasks.size());
     evaluator_->evaluate(mission->second, tasks, scores);

@@ -90,6 +90,9 @@ std::vector<char> encode(const WorkChunk& chunk) {
     w.put(task.key);
     w.put(task.seed);
     w.put(task.software);
+    w.put(static_cast<std::uint8_t>(task.robot ? 1 : 0));
+    if (task.robot)
+      for (const RobotKnob& knob : kRobotKnobs) w.put((*task.robot).*(knob.member));
   }
   return w.take();
 }
@@ -126,6 +129,11 @@ WorkChunk decode_work(const std::vector<char>& bytes) {
     task.key = r.get<std::int64_t>();
     task.seed = r.get<std::uint64_t>();
     task.software = r.text();
+    if (r.get<std::uint8_t>() != 0) {
+      RobotModel robot;
+      for (const RobotKnob& knob : kRobotKnobs) robot.*(knob.member) = r.get<double>();
+      task.robot = robot;
+    }
   }
   r.finish();
   return chunk;

@@ -4,9 +4,12 @@
 // strings, which round-trip exactly), and a chunk's scores. Pure functions, so the encoding is
 // tested without MPI.
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "simulator/robot_model.hpp"
 
 namespace sd::mpi {
 
@@ -22,6 +25,7 @@ struct WireTask {
   std::int64_t key = -1;  // EvaluationTask::key
   std::uint64_t seed = 0;
   std::string software;   // configuration string
+  std::optional<RobotModel> robot;  // EvaluationTask::robot (a pseudo-reality), by value
 };
 
 struct WorkChunk {

@@ -7,13 +7,16 @@
 
 namespace sd {
 
-void sense_camera(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm) {
+void sense_camera(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng* rng) {
   // argos3-epuck's rot_z_only camera (epuck_omnidirectional_camera_sensor.cpp) keeps an LED
   // when |dx| and |dy| of its offset from the camera are both below the ground half-range
   // 0.122 tan 70 deg: a square aligned with the world axes, not a disc, and the height
   // difference does not count.
   const double half_range = model.camera_range;
   auto in_view = [half_range](Vec2 offset) { return std::abs(offset.x) < half_range && std::abs(offset.y) < half_range; };
+  // argos3-epuck adds its noise to a blob in view: a vector of length N(0, s) in a uniformly
+  // random direction, after the range and occlusion checks.
+  const double noise = rng != nullptr ? model.camera_noise : 0.0;
   for (int i = 0; i < swarm.size; ++i) {
     const auto r = static_cast<std::size_t>(i);
     CameraBlob* out = swarm.blobs.data() + r * static_cast<std::size_t>(swarm.blobs_per_robot);
@@ -25,6 +28,10 @@ void sense_camera(const ArenaModel& arena, const RobotModel& model, SwarmState& 
     const Vec2 p = swarm.position[r], h = swarm.heading[r];
     const Vec3 camera{p.x, p.y, epuck::kCameraElevation};
     auto add = [&](std::uint32_t rgb, Vec2 offset) {
+      if (noise > 0.0) {
+        const double length = noise * rng->normal();
+        offset += Vec2::polar(length, rng->uniform(0.0, 2.0 * kPi));
+      }
       const double d = offset.length();
       const Vec2 local{h.x * offset.x + h.y * offset.y, h.x * offset.y - h.y * offset.x};
       out[count++] = {rgb, d > 0.0 ? local * (1.0 / d) : Vec2{1.0, 0.0}, d * 100.0};

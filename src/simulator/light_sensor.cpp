@@ -81,6 +81,7 @@ void sense_light(const ArenaModel& arena, const RobotModel& model, SwarmState& s
         if (delta < kPi / 2.0) reading[k] += base * (1.0 - 2.0 * delta / kPi);
       }
     }
+    if (swarm.deviations.active) scale_readings(reading, swarm.deviations.light[static_cast<std::size_t>(i)]);
     add_uniform_noise(reading, model.light_noise, rng);
   }
 }

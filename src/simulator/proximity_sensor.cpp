@@ -119,6 +119,7 @@ void sense_proximity(const ArenaModel& arena, const RobotModel& model, SwarmStat
       }
     }
     for (double& v : reading) v = epuck::proximity_reading(v);
+    if (swarm.deviations.active) scale_readings(reading, swarm.deviations.proximity[static_cast<std::size_t>(i)]);
     add_uniform_noise(reading, model.proximity_noise, rng);
   }
 }

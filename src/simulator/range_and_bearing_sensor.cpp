@@ -52,13 +52,30 @@ bool no_robot_between(const SwarmState& swarm, const RobotPair& pair) {
   return hit == 0.0;
 }
 
+/// The packet a receiver gets from a sender `offset` (sender minus receiver, world frame, m)
+/// away, seen with heading h, with argos3-epuck's position noise: a vector of length N(0, s)
+/// whose inclination and azimuth are uniform (as its sensor draws them) is added to the
+/// offset in 3D, and the range is that vector's length.
+RabPacket noisy_packet(Vec2 offset, Vec2 h, double noise, std::uint16_t sender, Rng& rng) {
+  const double length = noise * rng.normal();
+  const math::SinCos inclination = math::sincos(rng.uniform(0.0, kPi));
+  const math::SinCos azimuth = math::sincos(rng.uniform(0.0, 2.0 * kPi));
+  const Vec2 v{offset.x + length * inclination.sin * azimuth.cos, offset.y + length * inclination.sin * azimuth.sin};
+  const double z = length * inclination.cos;
+  const double horizontal = v.length();
+  const Vec2 u = horizontal > 0.0 ? v * (1.0 / horizontal) : Vec2{1.0, 0.0};
+  const double range_cm = std::sqrt(horizontal * horizontal + z * z) * 100.0 - epuck::kRabRangeOffsetCm;
+  return {range_cm, {h.x * u.x + h.y * u.y, h.x * u.y - h.y * u.x}, sender};
+}
+
 }  // namespace
 
 void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng) {
   std::fill(swarm.rab_count.begin(), swarm.rab_count.end(), 0);
-  if (swarm.broad_phase.use_grid && swarm.broad_phase.pair_range < model.rab_range) swarm.broad_phase.build(swarm.position, model.rab_range);
+  const double max_range = model.max_rab_range();
+  if (swarm.broad_phase.use_grid && swarm.broad_phase.pair_range < max_range) swarm.broad_phase.build(swarm.position, max_range);
   const std::size_t stride = swarm.rab_stride();
-  const double range_sq = model.rab_range * model.rab_range;
+  const double range_sq = max_range * max_range;
   const auto loss_threshold = static_cast<std::uint64_t>(model.rab_loss * 4294967296.0);
   // Whether a pair is in range, and whether a packet survives loss, are coin tosses for the
   // branch predictor; the pairs are therefore filtered in two branch-free passes (every
@@ -76,8 +93,14 @@ void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, S
   int surviving = 0;
   for (int n = 0; n < in_range; ++n) {
     const std::uint64_t bits = rng.next();
-    const std::uint64_t to_a = (bits >> 32) >= loss_threshold ? 1 : 0;
-    const std::uint64_t to_b = (bits & 0xffffffffu) >= loss_threshold ? 2 : 0;
+    std::uint64_t to_a = (bits >> 32) >= loss_threshold ? 1 : 0;
+    std::uint64_t to_b = (bits & 0xffffffffu) >= loss_threshold ? 2 : 0;
+    if (swarm.deviations.active) {  // a packet reaches as far as its sender's own range
+      const RobotPair& pair = swarm.broad_phase.pairs[kept[n]];
+      const double from_a = swarm.deviations.rab_range[pair.a], from_b = swarm.deviations.rab_range[pair.b];
+      to_a = pair.distance_sq < from_b * from_b ? to_a : 0;
+      to_b = pair.distance_sq < from_a * from_a ? to_b : 0;
+    }
     kept[surviving] = kept[n];
     received[surviving] = to_a | to_b;
     surviving += (to_a | to_b) != 0 ? 1 : 0;
@@ -85,18 +108,26 @@ void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, S
   // Whether a packet arrives is a coin toss too, so each is written to its receiver's next
   // slot and counted only if it arrived. A receiver meets each other robot once, so at most
   // size - 2 packets precede a write: the slot is always within its stride.
+  const double noise = model.rab_noise;
   for (int n = 0; n < surviving; ++n) {
     const RobotPair& pair = swarm.broad_phase.pairs[kept[n]];
     const bool visible = arena.line_of_sight_walls(swarm.position[pair.a], swarm.position[pair.b]) &&
                          no_robot_between(swarm, pair);
     const std::uint64_t arrived = visible ? received[n] : 0;
-    const double distance = std::sqrt(pair.distance_sq);
-    const double range_cm = distance * 100.0 - epuck::kRabRangeOffsetCm;
-    const Vec2 u = pair.delta * (1.0 / distance);  // from a towards b, world frame
     const Vec2 ha = swarm.heading[pair.a], hb = swarm.heading[pair.b];
-    swarm.rab[pair.a * stride + swarm.rab_count[pair.a]] = {range_cm, {ha.x * u.x + ha.y * u.y, ha.x * u.y - ha.y * u.x}, pair.b};
+    RabPacket& at_a = swarm.rab[pair.a * stride + swarm.rab_count[pair.a]];
+    RabPacket& at_b = swarm.rab[pair.b * stride + swarm.rab_count[pair.b]];
+    if (noise > 0.0) {  // a pseudo-reality's: one draw per packet that arrives
+      if (arrived & 1) at_a = noisy_packet(pair.delta, ha, noise, pair.b, rng);
+      if (arrived & 2) at_b = noisy_packet(-pair.delta, hb, noise, pair.a, rng);
+    } else {
+      const double distance = std::sqrt(pair.distance_sq);
+      const double range_cm = distance * 100.0 - epuck::kRabRangeOffsetCm;
+      const Vec2 u = pair.delta * (1.0 / distance);  // from a towards b, world frame
+      at_a = {range_cm, {ha.x * u.x + ha.y * u.y, ha.x * u.y - ha.y * u.x}, pair.b};
+      at_b = {range_cm, {-(hb.x * u.x + hb.y * u.y), -(hb.x * u.y - hb.y * u.x)}, pair.a};
+    }
     swarm.rab_count[pair.a] = static_cast<std::uint16_t>(swarm.rab_count[pair.a] + (arrived & 1));
-    swarm.rab[pair.b * stride + swarm.rab_count[pair.b]] = {range_cm, {-(hb.x * u.x + hb.y * u.y), -(hb.x * u.y - hb.y * u.x)}, pair.a};
     swarm.rab_count[pair.b] = static_cast<std::uint16_t>(swarm.rab_count[pair.b] + (arrived >> 1));
   }
 }

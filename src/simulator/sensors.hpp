@@ -22,8 +22,9 @@ void sense_light(const ArenaModel& arena, const RobotModel& model, SwarmState& s
 void sense_ground(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng);
 void sense_range_and_bearing(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng& rng);
 /// Omnidirectional camera (RM3.0): a blob per lit LED of another robot (its rear RGB LED,
-/// the one AutoMoDe lights in simulation) and per lit arena LED within range.
-void sense_camera(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm);
+/// the one AutoMoDe lights in simulation) and per lit arena LED within range. With a
+/// pseudo-reality's camera noise, its draws come from `rng` (none without it).
+void sense_camera(const ArenaModel& arena, const RobotModel& model, SwarmState& swarm, Rng* rng = nullptr);
 
 /// Where a robot's lit RGB LED is: index 2, at the rear, 1 mm outside the body.
 inline constexpr double kRgbLedOffset = -0.036;

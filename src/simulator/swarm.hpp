@@ -9,6 +9,7 @@
 
 #include "core/geometry.hpp"
 #include "simulator/broad_phase.hpp"
+#include "simulator/robot_deviations.hpp"
 
 namespace sd {
 
@@ -62,6 +63,10 @@ struct SwarmState {
   std::vector<CameraBlob> blobs;
   std::vector<std::uint16_t> blob_count;
   int blobs_per_robot = 0;
+
+  /// Each robot's own fixed gains for this run (a pseudo-reality's per-robot deviations);
+  /// inactive in the design model.
+  RobotDeviations deviations;
 
   /// The robot pairs of this tick, built by sense after physics and read by the sensors
   /// and by the next physics step.

@@ -12,7 +12,7 @@ namespace sd::mpi {
 namespace {
 
 TEST(wire, WorkChunksRoundTripExactly) {
-  WorkChunk chunk{7, 3, 42, 2, "abc123", {{-1, 9, "--fsm-config --nstates 1 --s0 0 --rwm0 5"}, {17, 1ULL << 40, ""}}};
+  WorkChunk chunk{7, 3, 42, 2, "abc123", {{-1, 9, "--fsm-config --nstates 1 --s0 0 --rwm0 5", {}}, {17, 1ULL << 40, "", {}}}};
   const WorkChunk back = decode_work(encode(chunk));
   EXPECT_EQ(back.evaluator, 7u);
   EXPECT_EQ(back.batch, 3u);
@@ -49,7 +49,7 @@ TEST(wire, MissionsAndFailuresRoundTrip) {
 }
 
 TEST(wire, TruncatedOrPaddedBuffersAreRefused) {
-  auto bytes = encode(WorkChunk{1, 1, 0, 1, "d", {{1, 2, "software"}}});
+  auto bytes = encode(WorkChunk{1, 1, 0, 1, "d", {{1, 2, "software", {}}}});
   auto truncated = bytes;
   truncated.resize(bytes.size() - 3);
   EXPECT_THROW(decode_work(truncated), WireError);
