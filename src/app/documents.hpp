@@ -7,6 +7,7 @@
 //   missions     the catalogue, one mission, a batch of scores
 //   experiments  an experiment's plan (with its duration estimate) and the experiments' progress
 //   evolution    an EvoStick evolution for a mission
+//   reality      a robot model (design model or pseudo-reality sample), an assessment
 // (The experiment report, control software and the module catalogue have their own makers:
 // experiment_report, control_software_document.)
 #include "app/documents/accounts.hpp"
@@ -14,3 +15,4 @@
 #include "app/documents/evolution.hpp"
 #include "app/documents/experiments.hpp"
 #include "app/documents/missions.hpp"
+#include "app/documents/reality.hpp"

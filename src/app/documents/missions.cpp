@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "app/documents/reality.hpp"
 #include "control/config_string.hpp"
 
 namespace sd::app {
@@ -47,7 +48,7 @@ json scores_document(const Mission& mission, const ControlSoftware& software, co
   json runs = json::array();
   for (std::size_t i = 0; i < seeds.size(); ++i) runs.push_back({{"seed", seeds[i]}, {"score", scores[i]}});
   json out{{"mission", mission.name}, {"direction", direction_name(mission.objective.direction)},
-           {"control_software", to_config_string(software)}, {"runs", runs}};
+           {"control_software", to_config_string(software)}, {"runs", runs}, {"robot", robot_model_document(mission.robot)}};
   if (seeds.size() > 1) {
     const ScoreSummary summary = summarize(scores);
     out["mean"] = summary.mean;

@@ -1,0 +1,47 @@
+#include "app/pseudo_realities.hpp"
+
+#include "app/errors.hpp"
+#include "app/inputs.hpp"
+
+namespace sd::app {
+
+NamedPseudoReality pseudo_reality_from_document(const std::string& reference, const std::string& document) {
+  try {
+    return {reference, parse_pseudo_reality(document, "pseudo-reality " + reference), document};
+  } catch (const PseudoRealityError& e) {
+    throw InvalidRequest(e.what());
+  }
+}
+
+NamedPseudoReality load_requested_pseudo_reality(const std::string& name_or_path, const FileScope& scope) {
+  if (name_or_path.empty()) throw InvalidRequest("pseudo-reality: empty name");
+  for (const BuiltinPseudoReality& b : builtin_pseudo_realities())
+    if (b.name == name_or_path) return pseudo_reality_from_document(name_or_path, std::string(b.json));
+  const bool looks_like_file = name_or_path.find('/') != std::string::npos || name_or_path.ends_with(".json");
+  if (!looks_like_file) {
+    std::string names;
+    for (const BuiltinPseudoReality& b : builtin_pseudo_realities()) names += (names.empty() ? "" : ", ") + std::string(b.name);
+    throw InvalidRequest("unknown pseudo-reality '" + name_or_path + "' (shipped: " + names + "; or a .json file)");
+  }
+  return pseudo_reality_from_document(name_or_path, scope.read(name_or_path, "pseudo-reality file"));
+}
+
+std::vector<std::uint64_t> parse_sample_range(const std::string& text) {
+  std::vector<std::uint64_t> samples;
+  try {
+    samples = parse_seed_range(text);
+  } catch (const InvalidRequest&) {
+    throw InvalidRequest("samples '" + text + "': expected K or A-B with positive integers");
+  }
+  if (samples.front() == 0) throw InvalidRequest("samples '" + text + "': samples are numbered from 1");
+  if (samples.size() > 10'000) throw InvalidRequest("samples '" + text + "': at most 10,000 samples");
+  return samples;
+}
+
+Mission in_pseudo_reality(const Mission& mission, const PseudoRealitySpec& spec, std::uint64_t sample) {
+  Mission m = mission;
+  m.robot = spec.sample(mission.robot, sample);
+  return m;
+}
+
+}  // namespace sd::app

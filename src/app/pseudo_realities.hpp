@@ -1,0 +1,32 @@
+#pragma once
+// The pseudo-realities a user names (Ligot & Birattari 2020; reality/pseudo_reality.hpp): a
+// shipped specification by name, or a specification file under app/user_files' one rule; and
+// the sample numbers they ask for.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "app/user_files.hpp"
+#include "missions/mission.hpp"
+#include "reality/pseudo_reality.hpp"
+
+namespace sd::app {
+
+struct NamedPseudoReality {
+  std::string reference;  // as the user named it: a shipped name or the file's path
+  PseudoRealitySpec spec;
+  std::string document;   // the specification's text, kept with a design so it resumes alike
+};
+
+/// InvalidRequest naming the bad field for a malformed specification, the scope's refusals
+/// for a file the user may not read.
+NamedPseudoReality load_requested_pseudo_reality(const std::string& name_or_path,
+                                                 const FileScope& scope = FileScope::local());
+/// A specification from its stored text (a design's folder), InvalidRequest when malformed.
+NamedPseudoReality pseudo_reality_from_document(const std::string& reference, const std::string& document);
+/// "K" or "A-B" with 1 <= A <= B, at most 10,000 samples; InvalidRequest otherwise.
+std::vector<std::uint64_t> parse_sample_range(const std::string& text);
+/// The mission run in sample k of the specification (its robot model replaced).
+Mission in_pseudo_reality(const Mission& mission, const PseudoRealitySpec& spec, std::uint64_t sample);
+
+}  // namespace sd::app
