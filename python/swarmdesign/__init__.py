@@ -14,6 +14,7 @@ design by Iterated F-Race and any design folder read back::
     result = sd.design("aac", budget=2000, architectures="fsm", flavours="chocolate", seed=1,
                        folder="aac-design")      # resumable: call it again after Ctrl-C
     sd.Design.open("aac-design").convergence     # a pandas DataFrame (list of dicts without pandas)
+    sd.assess("aac", result.best, "iridia-transfer", samples="1-20").summary   # the reality gap
 
 Long calls release the GIL (other Python threads run meanwhile) and stop on Ctrl-C with
 KeyboardInterrupt (a design then resumes from its folder). Errors are SwarmDesignError
@@ -50,7 +51,7 @@ from ._core import (
 __version__: str = _core.__version__
 
 __all__ = [
-    "AccessDeniedError", "Account", "ConfigError", "ConflictError", "ControlSoftware", "Design",
+    "AccessDeniedError", "Account", "Assessment", "assess", "ConfigError", "ConflictError", "ControlSoftware", "Design",
     "DesignFolderError", "DesignResult", "ExperimentReport", "ExportError", "FLAVOURS",
     "InvalidRequestError", "MAX_SEEDS", "MAX_SEED_BOUND", "MAX_THREADS", "Mission", "MissionError", "NotFoundError",
     "SwarmDesignError", "Trace", "design", "evaluate", "missions", "module_catalogue",
@@ -408,6 +409,94 @@ class Design:
 
     def __repr__(self) -> str:
         return f"<swarmdesign.Design {self.method} in {self.folder}>"
+
+
+# ---- the reality gap -------------------------------------------------------------------
+
+class Assessment:
+    """An assessment across the reality gap (``swarmdesign assess --json``): each piece of
+    control software on the same seeds in the design model and in pseudo-reality samples.
+
+    document: the whole dict; summary: one row per software (design and pseudo-reality means,
+    drop with its 95 % interval, relative drop, paired Wilcoxon p, ranks in each world);
+    scores: one row per run (software, world, sample, seed, score), as ``assess --csv``."""
+
+    def __init__(self, document: dict[str, Any]):
+        self.document = document
+
+    @property
+    def summary(self) -> Any:
+        rows = []
+        for s in self.document.get("software", []):
+            low, high = s.get("drop_ci95") or (None, None)
+            rows.append({"label": s["label"], "design_mean": s["design_mean"], "pseudo_reality_mean": s["pseudo_reality_mean"],
+                         "drop": s["drop"], "drop_low": low, "drop_high": high, "relative_drop": s["relative_drop"],
+                         "p_value": s["p_value"], "design_rank": s["design_rank"],
+                         "pseudo_reality_rank": s["pseudo_reality_rank"], "control_software": s["control_software"]})
+        return _table(rows)
+
+    @property
+    def scores(self) -> Any:
+        rows = [{"software": s["label"], "world": "design" if r["sample"] == 0 else "pseudo-reality",
+                 "sample": r["sample"], "seed": r["seed"], "score": r["score"]}
+                for s in self.document.get("software", []) for r in s.get("runs", [])]
+        return _table(rows, ["software", "world", "sample", "seed", "score"])
+
+    @property
+    def rank_correlation(self) -> Optional[float]:
+        return self.document.get("rank_correlation")
+
+    def __repr__(self) -> str:
+        d = self.document
+        return (f"<swarmdesign.Assessment {d.get('mission')}: {len(d.get('software', []))} software, "
+                f"{len(d.get('samples', []))} samples of {d.get('pseudo_reality', {}).get('reference')}>")
+
+
+def _samples(samples: Union[int, str, Iterable[int]]) -> list[int]:
+    if isinstance(samples, str):
+        return _core.parse_sample_range(samples)
+    if isinstance(samples, (int, np.integer)) and not isinstance(samples, bool):
+        return _core.parse_sample_range(str(int(samples)))
+    values = [_integer(k, "samples") for k in itertools.islice(iter(samples), 10_001)]
+    if not values or len(values) > 10_000 or any(k < 1 or k >= MAX_SEED_BOUND for k in values):
+        raise InvalidRequestError("samples: expected 1 to 10,000 sample numbers, each at least 1")
+    return values
+
+
+def _labelled(software: Any) -> list[tuple[str, ControlSoftware]]:
+    if isinstance(software, (ControlSoftware, str)):
+        return [("software", _software(software))]
+    if isinstance(software, Design):
+        best = software.best
+        if best is None:
+            raise InvalidRequestError(f"the design in {software.folder} has no result yet")
+        return [(f"{software.folder} best", best)]
+    if isinstance(software, dict):
+        return [(str(label), _software(s)) for label, s in software.items()]
+    out: list[tuple[str, ControlSoftware]] = []
+    for i, s in enumerate(software):
+        out.extend((f"software {i + 1}" if label == "software" else label, cs) for label, cs in _labelled(s))
+    if not out:
+        raise InvalidRequestError("nothing to assess: give control software")
+    return out
+
+
+def assess(mission: MissionLike, software: Any, pseudo_reality: str = "sampled-around",
+           samples: Union[int, str, Iterable[int]] = "1-20", seeds: SeedsLike = "1-10", threads: int = 0,
+           progress: Optional[Callable[[int, int], Any]] = None) -> Assessment:
+    """Assesses control software across the reality gap, as ``swarmdesign assess`` does: in the
+    design model and in pseudo-reality samples (Ligot & Birattari 2020), on the same seeds.
+
+    software: a ControlSoftware or configuration string, a Design (its best), a list of them,
+    or a dict label -> software. pseudo_reality: a shipped name (iridia-transfer,
+    tuttifrutti-transfer, sampled-around) or a specification file. samples: "K", "A-B" or
+    sample numbers (1 to 10,000 of them). Same errors, limits and Ctrl-C as evaluate()."""
+    _check_fork()
+    if not isinstance(pseudo_reality, (str, os.PathLike)):
+        raise TypeError("pseudo_reality: expected a name or a path")
+    document = _core.assess(_mission(mission), _labelled(software), os.fspath(pseudo_reality), _samples(samples),
+                            _seeds(seeds), _threads(threads), _callback(progress))
+    return Assessment(document)
 
 
 # ---- experiments and accounts ----------------------------------------------------------

@@ -89,7 +89,11 @@ py::object run_prepared(app::PreparedDesign& prepared, unsigned threads, const p
 py::object design(const std::string& mission, long long budget, const std::vector<std::string>& architectures,
                   const std::vector<std::string>& flavours, std::uint64_t seed, const std::string& folder, unsigned threads,
                   const py::object& progress) {
-  const app::NewDesignSettings settings{mission, budget, space_request(architectures, flavours), seed};
+  app::NewDesignSettings settings;
+  settings.mission = mission;
+  settings.budget = budget;
+  settings.space = space_request(architectures, flavours);
+  settings.seed = seed;
   if (!folder.empty() && std::filesystem::exists(storage::DesignStore::file_in(folder))) {
     // The folder holds a design already: go on with it, provided it is the one asked for.
     const app::PreparedDesign asked = app::check_new_design(settings);

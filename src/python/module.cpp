@@ -13,4 +13,5 @@ PYBIND11_MODULE(_core, module) {
   sd::python::bind_evaluation(module);
   sd::python::bind_designs(module);
   sd::python::bind_accounts(module);
+  sd::python::bind_reality(module);
 }
