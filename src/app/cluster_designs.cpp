@@ -184,7 +184,7 @@ ClusterSubmission submit_cluster_design(Home& home, const storage::User& user, c
     const std::uint64_t seed = request.seed ? *request.seed : random_seed();
     if (!project.mission) throw NotFound("project " + project.name + " has no mission; choose one with: swarmdesign set-mission");
     if (!project.budget) throw NotFound("project " + project.name + " has no budget; set one with: swarmdesign set-budget N");
-    const PreparedDesign checked = check_new_design({*project.mission, *project.budget, request.space, seed});
+    const PreparedDesign checked = check_new_design({*project.mission, *project.budget, request.space, seed, FileScope::local(), {}, {}, {}});
     if (latest && latest->state == storage::DesignState::interrupted && request.fresh) designs.abandon(latest->id);
     out.design = designs.start({checked.choice.architectures_text(), checked.choice.flavours_text(), seed,
                                 storage::owner_text(storage::slurm_submitting())});
@@ -246,6 +246,10 @@ std::optional<storage::DesignProgress> refresh_cluster_design(Home& home, const 
 
 StartedDesign SlurmJobs::start(Home& home, const storage::User& user, const DesignLaunch& launch) {
   if (launch.detach) throw InvalidRequest("--detach is for a local project: a cluster project's design runs as a Slurm job anyway");
+  // The job script runs `design` on the cluster from the project's settings, which do not
+  // carry a specification file there yet.
+  if (!launch.design.pseudo_reality.empty())
+    throw InvalidRequest("--pseudo-realities: robust designs run in a local project or on a server; not yet as Slurm jobs");
   ClusterSubmission s = submit_cluster_design(home, user, launch.design, launch.slurm);
   StartedDesign out{s.project, s.design, s.resubmitted, std::nullopt, {}, std::nullopt, false, 0, s.job, s.where};
   return out;

@@ -18,12 +18,24 @@ namespace sd::app {
 
 namespace {
 
-design::IraceOptions engine_options(long long budget, std::uint64_t seed) {
+design::IraceOptions engine_options(long long budget, std::uint64_t seed, std::size_t instances = 1) {
   design::IraceOptions o;
   o.max_experiments = budget;
   o.seed = seed;
-  o.n_instances = 1;  // one mission; every position of the instance list has its own seed
+  // One mission; every position of the instance list has its own seed. A robust design's
+  // instances are its pseudo-reality samples.
+  o.n_instances = instances;
   return o;
+}
+
+/// The pseudo-realities of a robust design: the models its instances run in.
+void use_pseudo_realities(PreparedDesign& d, NamedPseudoReality reality, const std::string& samples_text) {
+  const std::vector<std::uint64_t> samples = parse_sample_range(samples_text);
+  if (samples.size() > 1000) throw InvalidRequest("pseudo-reality samples '" + samples_text + "': at most 1,000 for a design");
+  d.instance_models.clear();
+  for (const std::uint64_t k : samples) d.instance_models.push_back(reality.spec.sample(d.mission.robot, k));
+  d.reality_samples = samples_text;
+  d.reality = std::move(reality);
 }
 
 /// design-<mission>-seed<S>, or with -2, -3 ... when taken: a design never lands in an old one.
@@ -64,7 +76,13 @@ PreparedDesign check_new_design(const NewDesignSettings& settings) {
   d.choice = resolve_space(settings.space);
   d.space = std::make_unique<design::ParameterSpace>(design::build_design_space(d.choice));
   require_minimum_budget(settings.budget, *d.space);
-  d.options = engine_options(settings.budget, settings.seed);
+  if (!settings.pseudo_reality.empty())
+    use_pseudo_realities(d,
+                         settings.pseudo_reality_document.empty()
+                             ? load_requested_pseudo_reality(settings.pseudo_reality, settings.files)
+                             : pseudo_reality_from_document(settings.pseudo_reality, settings.pseudo_reality_document),
+                         settings.pseudo_reality_samples);
+  d.options = engine_options(settings.budget, settings.seed, std::max<std::size_t>(1, d.instance_models.size()));
   return d;
 }
 
@@ -94,7 +112,15 @@ PreparedDesign prepare_resume(const std::filesystem::path& folder, bool allow_fi
     throw DesignFolderError("the design in " + d.folder.string() + " uses a design space this swarmdesign lacks: " + e.what());
   }
   d.space = std::make_unique<design::ParameterSpace>(design::build_design_space(d.choice));
-  d.options = engine_options(meta.budget, meta.seed);
+  if (!meta.pseudo_reality.empty()) {
+    try {
+      use_pseudo_realities(d, pseudo_reality_from_document(meta.pseudo_reality, meta.pseudo_reality_document),
+                           meta.pseudo_reality_samples);
+    } catch (const InvalidRequest& e) {
+      throw DesignFolderError("the design in " + d.folder.string() + " has pseudo-realities this swarmdesign cannot read: " + e.what());
+    }
+  }
+  d.options = engine_options(meta.budget, meta.seed, std::max<std::size_t>(1, d.instance_models.size()));
   if (design::fingerprint(*d.space, d.options) != meta.fingerprint)
     throw DesignFolderError("the design in " + d.folder.string() +
                             " was made with another design space or other optimiser settings than this swarmdesign has; "
@@ -113,14 +139,20 @@ DesignOutcome run_design(PreparedDesign& d, const DesignRunOptions& options) {
     if (d.resuming) return storage::DesignStore::open(d.folder);
     storage::DesignMeta meta{d.mission_reference, std::string(direction_name(d.mission.objective.direction)),
                              d.options.max_experiments, d.choice.architectures_text(), d.choice.flavours_text(),
-                             d.options.seed, design::fingerprint(*d.space, d.options), d.mission.digest, kResultsVersion};
+                             d.options.seed, design::fingerprint(*d.space, d.options), d.mission.digest, kResultsVersion,
+                             {}, {}, {}};
+    if (d.reality) {
+      meta.pseudo_reality = d.reality->reference;
+      meta.pseudo_reality_document = d.reality->document;
+      meta.pseudo_reality_samples = d.reality_samples;
+    }
     return storage::DesignStore::create(d.folder, meta);
   }();
   DesignDbCheckpoints checkpoints(store, *d.space);
 
   std::unique_ptr<Evaluator> own;
   Evaluator& evaluator = options.evaluator ? *options.evaluator : *(own = make_evaluator(static_cast<int>(options.threads)));
-  SimulationRunner runner(d.mission, *d.space, evaluator);
+  SimulationRunner runner(d.mission, *d.space, evaluator, d.instance_models);
   design::IteratedRace race(*d.space, d.options, runner);
   design::EliminationTracker eliminations;
   if (d.restored) {
@@ -158,6 +190,10 @@ DesignOutcome run_design(PreparedDesign& d, const DesignRunOptions& options) {
   r.architectures = d.choice.architectures_text();
   r.flavours = d.choice.flavours_text();
   r.notes = d.choice.notes;
+  if (d.reality) {
+    r.pseudo_reality = d.reality->reference;
+    r.pseudo_reality_samples = d.reality_samples;
+  }
   r.resumed = d.resuming;
   r.experiments_used = result.experiments_used;
   r.iterations = result.iterations;

@@ -15,9 +15,11 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "app/cancel_token.hpp"
+#include "app/pseudo_realities.hpp"
 #include "app/user_files.hpp"
 #include "control/control_software.hpp"
 #include "design/design_space.hpp"
@@ -27,12 +29,23 @@
 
 namespace sd::app {
 
+/// The samples a robust design races on by default: not assess's default 1-20, so that an
+/// assessment after the design is on pseudo-realities it never saw.
+inline constexpr std::string_view kDefaultDesignSamples = "101-120";
+
 struct NewDesignSettings {
   std::string mission;  // name or mission file
   long long budget = 0;
   design::DesignSpaceRequest space;
   std::uint64_t seed = 0;
   FileScope files = FileScope::local();  // where the mission file may be (a server: the user's projects)
+  /// A robust design (Ligot & Birattari 2020, one step further): a pseudo-reality specification
+  /// (shipped name or file) whose samples are the race's instances, each drawn with its own
+  /// seeds, so the race keeps control software that holds across robot models. Empty: the
+  /// design model alone.
+  std::string pseudo_reality;
+  std::string pseudo_reality_samples = std::string(kDefaultDesignSamples);
+  std::string pseudo_reality_document;  // its text when already read (a design resumed); else loaded
 };
 
 struct PreparedDesign {
@@ -44,6 +57,10 @@ struct PreparedDesign {
   design::IraceOptions options;
   std::optional<design::DesignState> restored;    // set when resuming from a checkpoint
   bool resuming = false;
+  /// A robust design's pseudo-realities: instance i runs in instance_models[i].
+  std::optional<NamedPseudoReality> reality;
+  std::string reality_samples;  // "A-B"
+  std::vector<RobotModel> instance_models;
 };
 
 /// Checks the settings of a new design (no folder yet): InvalidRequest for an unknown
@@ -72,6 +89,7 @@ struct DesignReport {
   std::uint64_t seed = 0;
   std::string architectures, flavours;
   std::vector<std::string> notes;
+  std::string pseudo_reality, pseudo_reality_samples;  // a robust design's; empty otherwise
   bool resumed = false;
   long long experiments_used = 0;
   int iterations = 0;

@@ -63,7 +63,8 @@ class AutoMoDe final : public DesignMethod {
     PreparedDesign prepared =
         std::filesystem::exists(storage::DesignStore::file_in(folder))
             ? prepare_resume(folder, true)
-            : prepare_new_design({d.mission, d.budget, design::request_from_text(d.architectures, d.flavours), d.seed},
+            : prepare_new_design({d.mission, d.budget, design::request_from_text(d.architectures, d.flavours), d.seed,
+                                  FileScope::local(), {}, std::string(kDefaultDesignSamples), {}},
                                  folder);
     RaceWatcher watcher(prepared.mission.objective.direction == Direction::Maximize, options.observer);
     const DesignOutcome outcome = run_design(

@@ -1,8 +1,12 @@
 #include "app/project_design.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include "app/errors.hpp"
 #include "app/inputs.hpp"
 #include "app/lease_keeper.hpp"
+#include "core/bounded_file.hpp"
+#include "core/durable_file.hpp"
 #include "control/config_string.hpp"
 #include "evaluation/results_version.hpp"
 #include "missions/catalogue.hpp"
@@ -32,11 +36,41 @@ bool repeats(const storage::Design& finished, const PreparedDesign& prepared, st
     return false;
   try {  // the same mission file may have been edited since, or the build may score otherwise
     const storage::DesignMeta meta = storage::DesignStore::open(finished.folder).meta();
+    const bool same_models = prepared.reality ? meta.pseudo_reality_document == prepared.reality->document &&
+                                                    meta.pseudo_reality_samples == prepared.reality_samples
+                                              : meta.pseudo_reality.empty();
     return !meta.mission_digest.empty() && meta.mission_digest == prepared.mission.digest &&
-           meta.results_version == kResultsVersion;
+           meta.results_version == kResultsVersion && same_models;
   } catch (const std::exception&) {
     return false;
   }
+}
+
+/// A robust design's pseudo-realities, kept in its folder from the start: a design killed
+/// before design.db exists starts again from its row, which does not hold them.
+constexpr const char* kPseudoRealityFile = "pseudo-reality.json";
+
+void remember_pseudo_reality(const PreparedDesign& d) {
+  std::filesystem::create_directories(d.folder);
+  const nlohmann::json doc = {{"reference", d.reality->reference},
+                              {"document", d.reality->document},
+                              {"samples", d.reality_samples}};
+  replace_file_durably(d.folder / kPseudoRealityFile, doc.dump(), 0600, Umask::Applies);
+}
+
+NewDesignSettings interrupted_settings(const storage::Design& latest, const FileScope& files) {
+  NewDesignSettings settings{latest.mission, latest.budget, design::request_from_text(latest.architectures, latest.flavours),
+                             latest.seed, files, {}, std::string(kDefaultDesignSamples), {}};
+  const std::filesystem::path remembered = latest.folder / kPseudoRealityFile;
+  if (!std::filesystem::exists(remembered)) return settings;
+  const nlohmann::json doc = nlohmann::json::parse(read_bounded_file(remembered, "pseudo-reality file").text);
+  const NamedPseudoReality reality =
+      pseudo_reality_from_document(doc.at("reference").get<std::string>(), doc.at("document").get<std::string>());
+  // Resumed from its own copy: a shipped name or file edited since cannot change it.
+  settings.pseudo_reality = reality.reference;
+  settings.pseudo_reality_document = reality.document;
+  settings.pseudo_reality_samples = doc.at("samples").get<std::string>();
+  return settings;
 }
 
 }  // namespace
@@ -62,9 +96,7 @@ ProjectDesign start_project_design(Home& home, const storage::User& user, const 
     try {
       prepared = std::filesystem::exists(storage::DesignStore::file_in(latest->folder))
                      ? prepare_resume(latest->folder, true, request.files)
-                     : prepare_new_design({latest->mission, latest->budget,
-                                           design::request_from_text(latest->architectures, latest->flavours),
-                                           latest->seed, request.files},
+                     : prepare_new_design(interrupted_settings(*latest, request.files),
                                           latest->folder);  // killed before its first checkpoint
     } catch (const std::exception& e) {
       throw DesignFolderError("design " + std::to_string(latest->id) + " of " + project.name +
@@ -78,7 +110,8 @@ ProjectDesign start_project_design(Home& home, const storage::User& user, const 
   const std::uint64_t seed = request.seed ? *request.seed : random_seed();
   std::optional<PreparedDesign> checked;
   if (project.mission && project.budget)  // else Designs::start says what is missing
-    checked = check_new_design({*project.mission, *project.budget, request.space, seed, request.files});
+    checked = check_new_design({*project.mission, *project.budget, request.space, seed, request.files,
+                                request.pseudo_reality, request.pseudo_reality_samples, {}});
   if (checked && latest && request.seed && !request.fresh && repeats(*latest, *checked, seed, *project.budget))
     throw AlreadyFinished(*latest, project.name);
   const design::DesignSpaceChoice choice = checked ? checked->choice : resolve_space(request.space);
@@ -91,6 +124,7 @@ ProjectDesign start_project_design(Home& home, const storage::User& user, const 
   if (!checked) throw std::logic_error("a design started without a mission or budget");
   PreparedDesign prepared = std::move(*checked);
   prepared.folder = design.folder;
+  if (prepared.reality) remember_pseudo_reality(prepared);
   return {workspace.home(), project, design, std::move(prepared), false, abandoned};
 }
 

@@ -6,10 +6,12 @@
 
 namespace sd::app {
 
-SimulationRunner::SimulationRunner(const Mission& mission, const design::ParameterSpace& space, Evaluator& evaluator)
+SimulationRunner::SimulationRunner(const Mission& mission, const design::ParameterSpace& space, Evaluator& evaluator,
+                                   std::span<const RobotModel> instance_models)
     : mission_(mission),
       space_(space),
       evaluator_(evaluator),
+      instance_models_(instance_models),
       maximise_(mission.objective.direction == Direction::Maximize) {}
 
 void SimulationRunner::run(std::span<const design::Experiment> experiments, std::span<double> costs) {
@@ -25,7 +27,9 @@ void SimulationRunner::run(std::span<const design::Experiment> experiments, std:
   std::erase_if(software_, [&](const auto& entry) { return !batch.count(entry.first); });
 
   tasks_.clear();
-  for (const auto& e : experiments) tasks_.push_back({&software_.at(e.configuration_id), e.seed, e.configuration_id});
+  for (const auto& e : experiments)
+    tasks_.push_back({&software_.at(e.configuration_id), e.seed, e.configuration_id,
+                      instance_models_.empty() ? nullptr : &instance_models_[e.instance]});
   scores_.resize(experiments.size());
   evaluator_.evaluate(mission_, tasks_, scores_);
   for (std::size_t i = 0; i < experiments.size(); ++i) costs[i] = maximise_ ? -scores_[i] : scores_[i];

@@ -19,8 +19,11 @@ namespace sd::app {
 
 class SimulationRunner final : public design::ExperimentRunner {
  public:
-  /// The mission, space and evaluator must outlive the runner.
-  SimulationRunner(const Mission& mission, const design::ParameterSpace& space, Evaluator& evaluator);
+  /// The mission, space, evaluator and models must outlive the runner. `instance_models`: a
+  /// robust design's pseudo-realities, instance i running in model i; empty: every instance
+  /// runs in the mission's own robot model.
+  SimulationRunner(const Mission& mission, const design::ParameterSpace& space, Evaluator& evaluator,
+                   std::span<const RobotModel> instance_models = {});
 
   void run(std::span<const design::Experiment> experiments, std::span<double> costs) override;
 
@@ -35,6 +38,7 @@ class SimulationRunner final : public design::ExperimentRunner {
   const Mission& mission_;
   const design::ParameterSpace& space_;
   Evaluator& evaluator_;
+  std::span<const RobotModel> instance_models_;
   bool maximise_;
   // The control software of the configurations in the last batch: parsed once, kept at the
   // same address while the configuration races (the evaluator caches simulations by key).

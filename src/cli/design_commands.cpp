@@ -25,26 +25,36 @@ struct DesignOptions {
   unsigned threads = 0;
   bool json = false;
   DesignSpaceFlags flags;
+  RobustDesignFlags robust;
 };
 
 void run_design_command(const DesignOptions& o) {
   app::PreparedDesign prepared;
   if (!o.resume.empty()) {
-    if (!o.mission.empty() || !o.budget.empty() || !o.seed.empty() || !o.out.empty() || o.flags.any())
+    if (!o.mission.empty() || !o.budget.empty() || !o.seed.empty() || !o.out.empty() || o.flags.any() || o.robust.any())
       throw UsageError("--resume continues a design with the settings it was started with; give only --threads or --json with it");
     prepared = app::prepare_resume(o.resume);
   } else {
     if (o.mission.empty()) throw UsageError("--mission is required (or --resume DIR)");
     if (o.budget.empty()) throw UsageError("--budget is required (or --resume DIR)");
-    app::NewDesignSettings settings{o.mission, app::parse_budget(o.budget), o.flags.request(),
-                                    o.seed.empty() ? app::random_seed() : app::parse_seed(o.seed)};
+    app::NewDesignSettings settings;
+    settings.mission = o.mission;
+    settings.budget = app::parse_budget(o.budget);
+    settings.space = o.flags.request();
+    settings.seed = o.seed.empty() ? app::random_seed() : app::parse_seed(o.seed);
+    if (o.robust.samples.size() && o.robust.pseudo_realities.empty())
+      throw UsageError("--pseudo-reality-samples needs --pseudo-realities SPEC");
+    settings.pseudo_reality = o.robust.pseudo_realities;
+    if (!o.robust.samples.empty()) settings.pseudo_reality_samples = o.robust.samples;
     prepared = app::prepare_new_design(settings, o.out);
   }
   for (const auto& note : prepared.choice.notes) std::cerr << "swarmdesign: note: " << note << "\n";
   if (!o.json)
     std::cout << (prepared.resuming ? "Resuming the design in " : "Designing in ") << prepared.folder.string()
               << " (mission " << prepared.mission.name << ", budget " << prepared.options.max_experiments
-              << ", seed " << prepared.options.seed << ")\n"
+              << ", seed " << prepared.options.seed
+              << (prepared.reality ? ", robust: pseudo-realities " + prepared.reality->reference + " samples " + prepared.reality_samples : "")
+              << ")\n"
               << std::flush;
   DesignDisplay display(ProgressLine::terminal_if(!o.json), prepared.mission.objective.direction == Direction::Maximize);
   const app::DesignOutcome outcome = app::run_design(prepared, {.threads = o.threads, .observer = &display});
@@ -59,6 +69,7 @@ void register_design(CLI::App& app) {
   cmd->add_option("--mission", o->mission, "Mission name or mission file");
   cmd->add_option("--budget", o->budget, "Design budget: the number of simulation runs the optimiser may use");
   add_design_space_flags(*cmd, o->flags);
+  add_robust_design_flags(*cmd, o->robust);
   cmd->add_option("--seed", o->seed, "Seed of the design (default: a random one, printed); same seed, same result");
   cmd->add_option("--threads", o->threads, "Simulations in parallel (default: all cores); the result does not depend on it")
       ->check(CLI::NonNegativeNumber);
@@ -71,7 +82,8 @@ void register_design(CLI::App& app) {
       "DIR/design.db after every race step, so a killed design continues with --resume DIR and ends\n"
       "exactly as if it had never stopped.\n\n"
       "Example:\n  swarmdesign design --mission aac --budget 20000 --fsm --chocolate --seed 1 --out aac-1\n"
-      "  swarmdesign design --resume aac-1");
+      "  swarmdesign design --resume aac-1\n"
+      "  swarmdesign design --mission aac --budget 20000 --fsm --chocolate --pseudo-realities sampled-around --out aac-robust");
   cmd->callback([o] { run_design_command(*o); });
 }
 

@@ -46,9 +46,15 @@ void print_design_report(const app::DesignReport& r) {
   std::cout << "Design finished (" << r.finish_reason << "): " << r.experiments_used << " of " << r.budget
             << " simulation runs, " << r.iterations << " iterations, seed " << r.seed << ".\n"
             << "Best control software (configuration " << best.id << "): mean score " << format_number(best.mean_score)
-            << " on " << r.mission << " (" << r.direction << ") over " << best.evaluations << " runs\n"
+            << " on " << r.mission << " (" << r.direction << ") over " << best.evaluations << " runs"
+            << (r.pseudo_reality.empty() ? "" : " in pseudo-realities " + r.pseudo_reality + " samples " + r.pseudo_reality_samples)
+            << "\n"
             << describe(r.best) << "Configuration string:\n  " << best.configuration << "\n"
             << "Design folder: " << r.folder.string() << "\n";
+  if (!r.pseudo_reality.empty())
+    std::cout << "A robust design: its race ran every candidate in pseudo-realities, not in the design model. Assess it\n"
+              << "on samples it never saw: swarmdesign assess --design " << r.folder.string() << " --pseudo-reality "
+              << r.pseudo_reality << " --samples 1-20\n";
 }
 
 }  // namespace sd::cli

@@ -28,4 +28,13 @@ void add_design_space_flags(CLI::App& command, DesignSpaceFlags& flags) {
   command.add_flag("--arlequin", flags.arlequin, "Use the Arlequin modules");
 }
 
+void add_robust_design_flags(CLI::App& command, RobustDesignFlags& flags) {
+  command.add_option("--pseudo-realities", flags.pseudo_realities,
+                     "Design robust control software: race every candidate in samples of this pseudo-reality specification "
+                     "(a shipped name, see `swarmdesign pseudo-realities`, or a .json file) instead of the design model");
+  command.add_option("--pseudo-reality-samples", flags.samples,
+                     "With --pseudo-realities: the samples the race's instances are, A-B (default 101-120, so that "
+                     "assess's default samples 1-20 stay unseen)");
+}
+
 }  // namespace sd::cli

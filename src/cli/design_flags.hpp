@@ -1,5 +1,8 @@
 #pragma once
-// The flags shared by design, irace-export and run-design: architectures and flavours.
+// The flags shared by design, irace-export and run-design: architectures and flavours; and a
+// robust design's pseudo-realities (design, run-design).
+#include <string>
+
 #include "cli/command_registry.hpp"
 #include "design/design_space.hpp"
 
@@ -13,5 +16,13 @@ struct DesignSpaceFlags {
 };
 
 void add_design_space_flags(CLI::App& command, DesignSpaceFlags& flags);
+
+/// A robust design's flags (design, run-design): --pseudo-realities SPEC and its samples.
+struct RobustDesignFlags {
+  std::string pseudo_realities, samples;
+  bool any() const { return !pseudo_realities.empty() || !samples.empty(); }
+};
+
+void add_robust_design_flags(CLI::App& command, RobustDesignFlags& flags);
 
 }  // namespace sd::cli

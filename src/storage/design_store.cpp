@@ -155,6 +155,11 @@ DesignStore DesignStore::create(const std::filesystem::path& folder, const Desig
     set("fingerprint", meta.fingerprint);
     set("mission_digest", meta.mission_digest);
     set("results_version", std::to_string(meta.results_version));
+    if (!meta.pseudo_reality.empty()) {
+      set("pseudo_reality", meta.pseudo_reality);
+      set("pseudo_reality_document", meta.pseudo_reality_document);
+      set("pseudo_reality_samples", meta.pseudo_reality_samples);
+    }
     set("created_at", std::to_string(std::time(nullptr)));
     t.commit();
     db.execute("PRAGMA wal_checkpoint(TRUNCATE)");  // everything in the main file before it is renamed
@@ -215,6 +220,14 @@ void DesignStore::read_meta() {
   meta_.mission_digest = digest.step() ? digest.text(0) : "";  // absent in older designs
   auto results = db.prepare("SELECT value FROM meta WHERE key = 'results_version'");
   meta_.results_version = results.step() ? static_cast<int>(to_int(results.text(0), "results_version")) : 1;  // absent before 2
+  const auto optional_value = [&](const char* key) {
+    auto row = db.prepare("SELECT value FROM meta WHERE key = ?");
+    row.bind(1, key);
+    return row.step() ? row.text(0) : std::string();
+  };
+  meta_.pseudo_reality = optional_value("pseudo_reality");  // absent: the design model alone
+  meta_.pseudo_reality_document = optional_value("pseudo_reality_document");
+  meta_.pseudo_reality_samples = optional_value("pseudo_reality_samples");
   auto step = db.prepare("SELECT step FROM checkpoint WHERE id = 1");
   step_ = step.step() ? step.integer(0) : 0;
   auto elites = db.prepare("SELECT count(DISTINCT iteration) FROM elites");

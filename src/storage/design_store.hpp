@@ -5,7 +5,8 @@
 //
 // Tables (format version kDesignFormatVersion):
 //   meta(key, value)                      format, version, mission, direction, budget, flags, seed,
-//                                         fingerprint of the parameter space and options
+//                                         fingerprint of the parameter space and options, and a
+//                                         robust design's pseudo-realities
 //   configurations(id, parent, iteration, record, command_line)
 //                                         every configuration sampled; record = exact values (JSON)
 //   experiments(seq, iteration, position, seed, configuration_id, cost)
@@ -48,6 +49,10 @@ struct DesignMeta {
   std::string fingerprint;    // IteratedRace::fingerprint(): parameter space and options
   std::string mission_digest; // Mission::digest; empty for designs made before it was kept
   int results_version = 1;    // kResultsVersion of the build that started it; 1 when not kept
+  /// A robust design's pseudo-realities (Ligot & Birattari 2020): the specification as the user
+  /// named it, its whole text (so it resumes alike if the file changes) and the samples its
+  /// instances are, "A-B". Empty for a design in the design model alone.
+  std::string pseudo_reality, pseudo_reality_document, pseudo_reality_samples;
 };
 
 /// One checkpoint's new rows, written in one transaction.

@@ -22,7 +22,7 @@ json design_report_document(const DesignReport& r) {
   json elites = json::array();
   for (const auto& e : r.elites) elites.push_back(elite_document(e));
   const double overhead = r.wall_seconds > 0 ? (r.wall_seconds - r.evaluation_seconds) / r.wall_seconds : 0.0;
-  return {{"folder", r.folder.string()},
+  json out = {{"folder", r.folder.string()},
           {"mission", r.mission},
           {"direction", r.direction},
           {"budget", r.budget},
@@ -38,6 +38,10 @@ json design_report_document(const DesignReport& r) {
           {"timing",
            {{"wall_s", r.wall_seconds}, {"evaluation_s", r.evaluation_seconds}, {"optimiser_overhead", overhead},
             {"threads", r.threads}}}};
+  // A robust design says where its instances ran; its mean scores are over those models.
+  if (!r.pseudo_reality.empty())
+    out["pseudo_reality"] = {{"reference", r.pseudo_reality}, {"samples", r.pseudo_reality_samples}};
+  return out;
 }
 
 json progress_document(const design::Progress& p, bool maximise) {
