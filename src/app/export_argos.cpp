@@ -5,6 +5,7 @@
 
 #include "app/errors.hpp"
 #include "app/inputs.hpp"
+#include "app/pseudo_realities.hpp"
 #include "app/user_files.hpp"
 #include "core/durable_file.hpp"
 
@@ -52,8 +53,18 @@ argos::Experiment export_mission(const MissionExportRequest& request) {
   const std::string& tag = request.options.controller_tag;
   if (tag != "automode_controller" && tag != "automode_controller_bt")
     throw InvalidRequest("--controller: automode_controller or automode_controller_bt, not '" + tag + "'");
-  const Mission mission = load_requested_mission(request.mission);
+  Mission mission = load_requested_mission(request.mission);
+  if (request.pseudo_reality.empty() != request.sample.empty())
+    throw InvalidRequest("--pseudo-reality and --sample go together: the specification and which of its samples");
+  if (!request.pseudo_reality.empty()) {
+    const std::vector<std::uint64_t> sample = parse_sample_range(request.sample);
+    if (sample.size() != 1) throw InvalidRequest("--sample: one sample number, not a range");
+    mission = in_pseudo_reality(mission, load_requested_pseudo_reality(request.pseudo_reality).spec, sample.front());
+  }
   argos::Experiment experiment = argos::argos_experiment(mission, request.options);
+  if (mission.robot.has_deviations())
+    experiment.notes.push_back("this pseudo-reality's per-robot deviations (each robot's own gains) have no ARGoS "
+                               "attribute: the file gives every e-puck the sample's noise, not its deviations");
   // A kill while writing leaves the old file or the new one, never half an experiment.
   try {
     replace_file_durably(request.out, experiment.xml, 0644, Umask::Applies);

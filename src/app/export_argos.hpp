@@ -2,6 +2,7 @@
 // Giving SwarmDesign's work back to the AutoMoDe tool chain (export --argos, mission
 // export-argos, and the --argos of status and test-design): the jobs over src/export, with
 // their refusals as InvalidRequest (the request asks for what the target code base cannot read).
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -32,6 +33,10 @@ struct MissionExportRequest {
   std::string mission;             // catalogue name or mission file
   std::filesystem::path out;       // the .argos file to write
   argos::ExperimentOptions options;
+  /// A pseudo-reality sample to write instead of the design model (the same sample runs in
+  /// ARGoS as here): a specification's shipped name or file, and the sample number (>= 1).
+  std::string pseudo_reality;
+  std::string sample;
 };
 /// Writes the file; returns what was written (its notes are for the user).
 argos::Experiment export_mission(const MissionExportRequest& request);

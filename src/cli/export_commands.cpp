@@ -48,7 +48,7 @@ void export_control_software(const ExportOptions& o, const Context& context) {
 }
 
 struct MissionExportOptions {
-  std::string mission, out;
+  std::string mission, out, pseudo_reality, sample;
   bool json = false;
   argos::ExperimentOptions experiment;
 };
@@ -58,6 +58,8 @@ void export_mission(const MissionExportOptions& o) {
   request.mission = o.mission;
   request.out = o.out;
   request.options = o.experiment;
+  request.pseudo_reality = o.pseudo_reality;
+  request.sample = o.sample;
   const argos::Experiment written = app::export_mission(request);
   for (const std::string& note : written.notes) std::cerr << "swarmdesign: note: " << note << "\n";
   if (o.json) {
@@ -105,13 +107,17 @@ const CommandRegistrar registrar{12, [](CLI::App& app, Context& context) {
                     "ARGoS3-AutoMoDe's libautomode.so, for the controller");
   argos->add_option("--controller", m->experiment.controller_tag,
                     "automode_controller (default; automode_main) or automode_controller_bt (automode_main_bt's trees)");
+  argos->add_option("--pseudo-reality", m->pseudo_reality,
+                    "Write a pseudo-reality's noise instead of the design model's: a shipped specification or a .json file");
+  argos->add_option("--sample", m->sample, "With --pseudo-reality: which sample (1, 2, ...)");
   argos->add_flag("--json", m->json, "Print one JSON document");
   argos->footer(
       "The e-pucks are epuck0 ... (unique ids for AutoMoDe's messages); the loop functions named by the\n"
       "mission file's \"argos\" field draw the floor and score each run.\n\n"
       "Example:\n  swarmdesign mission export-argos aac --out aac.argos \\\n"
       "      --loop-functions-dir ~/experiments-loop-functions/build \\\n"
-      "      --automode-library ~/ARGoS3-AutoMoDe/build/src/libautomode.so");
+      "      --automode-library ~/ARGoS3-AutoMoDe/build/src/libautomode.so\n"
+      "  swarmdesign mission export-argos aac --out aac-pr3.argos --pseudo-reality sampled-around --sample 3");
   argos->callback([m] { export_mission(*m); });
 }};
 

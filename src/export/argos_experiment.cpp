@@ -145,14 +145,17 @@ void write_controller(pugi::xml_node root, const Mission& m, const ExperimentOpt
   auto sensors = child(controller, "sensors");
   element(sensors, "epuck_proximity", {{"implementation", "default"}, {"show_rays", "false"},
                                        {"noise_level", number(r.proximity_noise)}, {"calibrated", "true"}});
-  element(sensors, "epuck_range_and_bearing", {{"implementation", "medium"}, {"medium", "rab"}, {"data_size", "4"},
-                                               {"loss_probability", number(r.rab_loss)}, {"calibrated", "true"}});
+  auto rab = element(sensors, "epuck_range_and_bearing", {{"implementation", "medium"}, {"medium", "rab"}, {"data_size", "4"},
+                                                          {"loss_probability", number(r.rab_loss)}, {"calibrated", "true"}});
+  // The plugin's own spelling: IRIDIA's files say noise_std_deviation, which it never reads.
+  if (r.rab_noise > 0.0) attr(rab, "noise_std_dev", number(r.rab_noise));
   element(sensors, "epuck_light", {{"implementation", "default"}, {"show_rays", "false"},
                                    {"noise_level", number(r.light_noise)}, {"calibrated", "true"}});
   element(sensors, "epuck_ground",
           {{"implementation", "rot_z_only"}, {"noise_level", number(r.ground_noise)}, {"calibrated", "true"}});
-  element(sensors, "epuck_omnidirectional_camera",
-          {{"implementation", "rot_z_only"}, {"medium", "leds"}, {"show_rays", "false"}});
+  auto camera = element(sensors, "epuck_omnidirectional_camera",
+                        {{"implementation", "rot_z_only"}, {"medium", "leds"}, {"show_rays", "false"}});
+  if (r.camera_noise > 0.0) attr(camera, "noise_std_dev", number(r.camera_noise));
   element(controller, "params", {{"readable", "false"}, {"history", "false"}});
 }
 
