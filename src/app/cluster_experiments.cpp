@@ -95,7 +95,7 @@ ClusterExperimentSubmission submit_cluster_experiment(Home& home, const storage:
       }
     }
     if (d.stage == storage::DesignStage::assessing)
-      assess_design(store, d, protocol.assessment_seeds, {.threads = threads, .evaluator = nullptr, .observer = nullptr, .cancel = nullptr});
+      assess_design(store, d, protocol, {.threads = threads, .evaluator = nullptr, .observer = nullptr, .cancel = nullptr});
     if (d.stage == storage::DesignStage::pending || d.stage == storage::DesignStage::designing) to_make.push_back(d);
     else ++out.designs_done;
   }
@@ -187,7 +187,7 @@ void refresh_cluster_experiment(Home& home, const storage::Project& project, con
       const storage::DesignProgress progress = storage::read_design_progress(d.folder);
       if (!progress.best) continue;
       store.design_finished(d.id, progress.best->command_line, progress.best->mean_score, progress.experiments_used);
-      assess_design(store, store.design(d.id), protocol.assessment_seeds,
+      assess_design(store, store.design(d.id), protocol,
                     {.threads = threads, .evaluator = nullptr, .observer = nullptr, .cancel = nullptr});
     }
     if (!all_ended) {

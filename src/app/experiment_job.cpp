@@ -7,12 +7,14 @@
 
 #include "app/cluster_experiments.hpp"
 #include "app/design_method.hpp"
+#include "app/assess_job.hpp"
 #include "app/errors.hpp"
 #include "app/evaluation_job.hpp"
 #include "app/inputs.hpp"
 #include "app/user_files.hpp"
 #include "app/lease_keeper.hpp"
 #include "app/projects.hpp"
+#include "app/pseudo_realities.hpp"
 #include "control/config_string.hpp"
 #include "core/fnv.hpp"
 #include "core/rng.hpp"
@@ -71,17 +73,50 @@ bool make_design(storage::Experiments& store, const storage::ExperimentDesign& d
   return true;
 }
 
+/// The pseudo-reality a planned protocol holds.
+NamedPseudoReality reality_spec(const experiments::PseudoRealityPlan& plan) {
+  if (plan.definition.is_null())
+    throw InvalidRequest("pseudo_reality.spec: '" + plan.spec + "' was not read when the experiment was planned");
+  try {
+    return pseudo_reality_from_document(plan.spec, plan.definition.dump());
+  } catch (const InvalidRequest& e) {
+    throw InvalidRequest(std::string("pseudo_reality.definition: ") + e.what());
+  }
+}
+
 }  // namespace
 
-void assess_design(storage::Experiments& store, const storage::ExperimentDesign& d, int seeds_count,
+void assess_design(storage::Experiments& store, const storage::ExperimentDesign& d, const experiments::Protocol& protocol,
                    const ExperimentRunOptions& options) {
   const Mission mission = load_mission(d.plan.mission);
   const ControlSoftware software = parse_control_software(d.configuration.value());
-  const std::vector<std::uint64_t> seeds = assessment_seeds(seeds_count);
-  ScoreOptions score_options{.threads = static_cast<int>(options.threads), .evaluator = options.evaluator, .progress = {}};
-  if (options.observer) score_options.progress = [&](std::size_t done, std::size_t all) { options.observer->assessing(done, all); };
-  const std::vector<double> scores = score_seeds(mission, software, seeds, score_options);
-  store.record_assessment(d.id, seeds, scores);
+  const std::vector<std::uint64_t> seeds = assessment_seeds(protocol.assessment_seeds);
+  std::function<void(std::size_t, std::size_t)> progress;
+  if (options.observer) progress = [&](std::size_t done, std::size_t all) { options.observer->assessing(done, all); };
+  std::vector<double> scores;
+  std::vector<storage::RealityScore> reality;
+  if (const auto& r = protocol.pseudo_reality) {
+    // The design model and every sample on the same seeds, in one batch of runs.
+    AssessRequest request;
+    request.software = {{"design", software}};
+    request.spec = reality_spec(*r).spec;
+    request.spec_reference = r->spec;
+    for (int k = 1; k <= r->samples; ++k) request.samples.push_back(static_cast<std::uint64_t>(k));
+    request.seeds = seeds;
+    request.threads = static_cast<int>(options.threads);
+    request.evaluator = options.evaluator;
+    request.progress = progress;
+    const Assessment a = assess(mission, request);
+    scores = a.software.at(0).design_scores;
+    const std::vector<double>& in_reality = a.software.at(0).reality_scores;
+    for (std::size_t k = 0; k < request.samples.size(); ++k)
+      for (std::size_t s = 0; s < seeds.size(); ++s)
+        reality.push_back({request.samples[k], seeds[s], in_reality.at(k * seeds.size() + s)});
+  } else {
+    scores = score_seeds(mission, software, seeds,
+                         {.threads = static_cast<int>(options.threads), .evaluator = options.evaluator, .progress = progress});
+  }
+  store.record_assessment(d.id, seeds, scores, reality);
   if (options.observer)
     options.observer->design_done(d, statistics::mean(scores));
 }
@@ -96,9 +131,23 @@ std::vector<std::uint64_t> assessment_seeds(int count) {
   return seeds;
 }
 
-PlannedExperiment plan_experiment(const experiments::Protocol& protocol) {
+PlannedExperiment plan_experiment(const experiments::Protocol& protocol, const FileScope& scope) {
   PlannedExperiment plan;
   plan.protocol = protocol;
+  if (auto& r = plan.protocol.pseudo_reality) {
+    if (r->definition.is_null()) {
+      try {
+        r->definition = nlohmann::json::parse(load_requested_pseudo_reality(r->spec, scope).document, nullptr, true, true);
+      } catch (const InvalidRequest& e) {
+        throw InvalidRequest(std::string("pseudo_reality.spec: ") + e.what());
+      } catch (const NotFound& e) {
+        throw InvalidRequest(std::string("pseudo_reality.spec: ") + e.what());
+      }
+    }
+    reality_spec(*r);  // InvalidRequest naming the field for a malformed inline one
+  }
+  const std::int64_t runs_per_assessment =
+      static_cast<std::int64_t>(protocol.assessment_seeds) * (1 + (protocol.pseudo_reality ? protocol.pseudo_reality->samples : 0));
   for (const auto& m : protocol.missions) {
     load_requested_mission(m.mission);  // InvalidRequest naming the mission (or its file's field)
     const std::string mission = mission_reference(m.mission);
@@ -114,7 +163,7 @@ PlannedExperiment plan_experiment(const experiments::Protocol& protocol) {
         d.seed = design_seed(protocol, m.mission, c.name, r);
         plan.designs.push_back(d);
         plan.design_runs += d.budget;
-        plan.assessment_runs += protocol.assessment_seeds;
+        plan.assessment_runs += runs_per_assessment;
       }
     }
   }
@@ -127,7 +176,9 @@ DurationEstimate estimate_duration(const PlannedExperiment& plan, unsigned threa
   Evaluator& evaluator = *backend;
   estimate.threads = evaluator.workers();
   std::map<std::string, std::int64_t> runs;
-  for (const auto& d : plan.designs) runs[d.mission] += d.budget + plan.protocol.assessment_seeds;
+  const std::int64_t runs_per_assessment =
+      plan.designs.empty() ? 0 : plan.assessment_runs / static_cast<std::int64_t>(plan.designs.size());
+  for (const auto& d : plan.designs) runs[d.mission] += d.budget + runs_per_assessment;
   for (const auto& m : plan.protocol.missions) {
     const std::string reference = mission_reference(m.mission);
     const Mission mission = load_mission(reference);
@@ -212,7 +263,7 @@ ExperimentOutcome run_experiment(StartedExperiment& e, const ExperimentRunOption
         design_start = Clock::now();
       }
       d = store.design(d.id);  // with its final control software
-      assess_design(store, d, protocol.assessment_seeds, options);
+      assess_design(store, d, protocol, options);
       store.add_wall_seconds(d.id, seconds_since(design_start));
       ++outcome.designs_done;
     }

@@ -20,6 +20,7 @@
 #include "app/design_job.hpp"
 #include "app/documents/experiments.hpp"
 #include "app/home.hpp"
+#include "app/user_files.hpp"
 #include "experiments/protocol.hpp"
 #include "storage/design_status.hpp"
 #include "storage/experiments.hpp"
@@ -33,13 +34,17 @@ struct PlannedExperiment {
   std::vector<storage::PlannedDesign> designs;  // in the order they run
   std::vector<std::string> notes;               // e.g. budgets raised to the optimiser's minimum
   std::int64_t design_runs = 0;                 // simulation runs of all designs
-  std::int64_t assessment_runs = 0;             // and of all assessments
+  std::int64_t assessment_runs = 0;             // and of all assessments (pseudo-realities included)
 };
 
 /// InvalidRequest (naming the mission and condition) for a mission no catalogue has, a
 /// flavour without modules; a scaled budget below the optimiser's minimum is raised to it,
-/// with a note.
-PlannedExperiment plan_experiment(const experiments::Protocol& protocol);
+/// with a note. A pseudo-reality the protocol names is read (through `scope`: a server's user
+/// reads only their own projects' files) and its specification written into the plan's
+/// protocol (`pseudo_reality.definition`), unless the protocol already holds one: the
+/// experiment then resumes with the robot models it started with. InvalidRequest naming
+/// `pseudo_reality.spec` for a bad one.
+PlannedExperiment plan_experiment(const experiments::Protocol& protocol, const FileScope& scope = FileScope::local());
 
 /// How a mission is named in displays and reports: a catalogue name as is, a mission file by
 /// its file name without extension.
@@ -113,10 +118,12 @@ struct ExperimentOutcome {
 
 ExperimentOutcome run_experiment(StartedExperiment& experiment, const ExperimentRunOptions& options);
 
-/// Scores a design's final control software on the assessment seeds and records it: the
-/// design is done. (A cluster experiment's designs are assessed here when they come home.)
-void assess_design(storage::Experiments& store, const storage::ExperimentDesign& design, int seeds_count,
-                   const ExperimentRunOptions& options);
+/// Scores a design's final control software on the protocol's assessment seeds — in the design
+/// model and, when the protocol asks, on the same seeds in each pseudo-reality sample — and
+/// records it all at once: the design is done. (A cluster experiment's designs are assessed
+/// here when they come home.)
+void assess_design(storage::Experiments& store, const storage::ExperimentDesign& design,
+                   const experiments::Protocol& protocol, const ExperimentRunOptions& options);
 
 /// A project's experiments with their progress (status, the web monitor).
 struct ExperimentProgress {

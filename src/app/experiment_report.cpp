@@ -24,7 +24,10 @@
 #include "statistics/box_stats.hpp"
 #include "statistics/descriptive.hpp"
 #include "statistics/expected_ranks.hpp"
+#include "statistics/mean_interval.hpp"
 #include "statistics/rank_sum.hpp"
+#include "statistics/ranks.hpp"
+#include "statistics/signed_rank.hpp"
 #include "storage/clock.hpp"
 #include "storage/design_status.hpp"
 #include "storage/experiments.hpp"
@@ -75,12 +78,17 @@ struct MissionInfo {
   json document;
 };
 
+/// A design's score in one world: the design model's (its assessment) or the pseudo-realities'.
+using ScoreOf = double (*)(const json&);
+double design_model_score(const json& d) { return d["score"].get<double>(); }
+double pseudo_reality_score(const json& d) { return d["pseudo_reality"]["score"].get<double>(); }
+
 /// One (mission, condition) cell: its finished designs, in replicate order.
 struct Cell {
   std::vector<const json*> designs;
-  std::vector<double> scores() const {
+  std::vector<double> scores(ScoreOf of = design_model_score) const {
     std::vector<double> s;
-    for (const json* d : designs) s.push_back((*d)["score"].get<double>());
+    for (const json* d : designs) s.push_back(of(*d));
     return s;
   }
 };
@@ -100,7 +108,46 @@ json better_of(const std::string& a, const std::string& b, double median_a, doub
   return (median_a > median_b) == maximise ? a : b;
 }
 
-json design_document(const storage::ExperimentDesign& d, const std::string& mission, storage::Experiments& store) {
+/// A design in the pseudo-realities: its scores per sample and seed, their mean, and the drop
+/// from the design model with its 95 % interval and paired test over the seeds (the design-model
+/// score against the mean over the samples with that seed), as app/assess_job computes them.
+/// Null when the protocol asked for no pseudo-reality.
+json reality_document(const std::vector<storage::RealityScore>& reality, const std::vector<std::uint64_t>& seeds,
+                      const std::vector<double>& design_scores, bool maximise) {
+  if (reality.empty() || seeds.empty()) return nullptr;
+  std::vector<double> scores, by_seed(seeds.size(), 0.0);
+  std::vector<int> count(seeds.size(), 0);
+  std::set<std::uint64_t> samples;
+  for (const storage::RealityScore& r : reality) {
+    scores.push_back(r.score);
+    samples.insert(r.sample);
+    const auto at = std::find(seeds.begin(), seeds.end(), r.seed);
+    if (at == seeds.end()) continue;
+    by_seed[static_cast<std::size_t>(at - seeds.begin())] += r.score;
+    ++count[static_cast<std::size_t>(at - seeds.begin())];
+  }
+  std::vector<double> losses(seeds.size());
+  for (std::size_t j = 0; j < seeds.size(); ++j) {
+    by_seed[j] /= std::max(1, count[j]);
+    losses[j] = maximise ? design_scores[j] - by_seed[j] : by_seed[j] - design_scores[j];
+  }
+  const double design_mean = statistics::mean(design_scores), reality_mean = statistics::mean(scores);
+  const double drop = maximise ? design_mean - reality_mean : reality_mean - design_mean;
+  const statistics::MeanInterval interval = statistics::t_interval(losses);
+  const bool all_zero = std::all_of(losses.begin(), losses.end(), [](double v) { return v == 0.0; });
+  const double p = all_zero ? 1.0 : statistics::wilcoxon_signed_rank(design_scores, by_seed).p_value;
+  return {{"samples", samples.size()},
+          {"scores", scores},
+          {"score", reality_mean},
+          {"by_seed", by_seed},
+          {"drop", drop},
+          {"drop_ci95", {interval.low, interval.high}},
+          {"relative_drop", design_mean != 0.0 ? json(drop / std::abs(design_mean)) : json(nullptr)},
+          {"p_value", p}};
+}
+
+json design_document(const storage::ExperimentDesign& d, const std::string& mission, bool maximise,
+                     storage::Experiments& store) {
   const ControlSoftware software = parse_control_software(*d.configuration);
   const auto [behaviours, conditions] = modules_used(software);
   std::vector<std::uint64_t> seeds;
@@ -113,7 +160,9 @@ json design_document(const storage::ExperimentDesign& d, const std::string& miss
   json convergence = json::array();
   const auto folder = d.reused_from ? store.design(*d.reused_from).folder : d.folder;
   for (const auto& p : design_method(d.plan.method).convergence(folder)) convergence.push_back({p.runs_used, p.best_score});
+  json reality = reality_document(store.reality_assessments(d.id), seeds, scores, maximise);
   return {{"id", d.id},
+          {"pseudo_reality", std::move(reality)},
           {"mission", mission},
           {"condition", d.plan.condition},
           {"replicate", d.plan.replicate},
@@ -172,7 +221,7 @@ json boxes_and_tests(const Analysis& a, json& report) {
 }
 
 /// Friedman across missions over the conditions that every mission has.
-json friedman_document(const Analysis& a) {
+json friedman_document(const Analysis& a, ScoreOf of = design_model_score) {
   std::vector<std::string> common;
   for (const auto& c : a.conditions)
     if (std::all_of(a.missions.begin(), a.missions.end(), [&](const MissionInfo& m) { return a.cell(m.key, c); }))
@@ -184,7 +233,7 @@ json friedman_document(const Analysis& a) {
   for (const MissionInfo& m : a.missions) {
     std::vector<double> row;
     row.reserve(row.size() + common.size());
-    for (const auto& c : common) row.push_back(statistics::median(a.cell(m.key, c)->scores()));
+    for (const auto& c : common) row.push_back(statistics::median(a.cell(m.key, c)->scores(of)));
     values.push_back(std::move(row));
     maximise.push_back(m.maximise);
     blocks.push_back(m.key);
@@ -199,6 +248,88 @@ json friedman_document(const Analysis& a) {
           {"p_value", r.p_value},
           {"expected_ranks", ranks},
           {"critical_difference", r.critical_difference ? json(*r.critical_difference) : json(nullptr)}};
+}
+
+/// Conditions ranked on one mission by their median design score, 1 = best (ties share the
+/// average rank).
+std::vector<double> condition_ranks(const std::vector<double>& medians, bool maximise) {
+  std::vector<double> keys(medians.size());
+  for (std::size_t i = 0; i < medians.size(); ++i) keys[i] = maximise ? -medians[i] : medians[i];
+  return statistics::average_ranks(keys);
+}
+
+/// The reality gap as the experiment shows it (Ligot & Birattari 2020): per mission and
+/// condition the designs' scores in the design model and in the pseudo-realities side by side,
+/// the drop with a paired Wilcoxon signed-rank test over the designs, and how the conditions'
+/// ranks change from one world to the other. Null when the protocol asked for no pseudo-reality.
+json pseudo_reality_document(const Analysis& all, const experiments::Protocol& protocol) {
+  if (!protocol.pseudo_reality) return nullptr;
+  const auto& plan = *protocol.pseudo_reality;
+  // Only the designs assessed in the pseudo-realities.
+  Analysis a{all.missions, all.conditions, {}};
+  for (const auto& [key, cell] : all.cells)
+    for (const json* d : cell.designs)
+      if (!(*d)["pseudo_reality"].is_null()) a.cells[key].designs.push_back(d);
+  json cells = json::array(), ranks = json::array(), inversions = json::array();
+  for (const MissionInfo& m : a.missions) {
+    std::vector<std::string> present;
+    std::vector<double> design_medians, reality_medians;
+    for (const auto& c : a.conditions) {
+      const Cell* cell = a.cell(m.key, c);
+      if (!cell) continue;
+      const std::vector<double> design = cell->scores(), reality = cell->scores(pseudo_reality_score);
+      std::vector<double> drops;
+      int dropping = 0;
+      for (const json* d : cell->designs) {
+        const json& r = (*d)["pseudo_reality"];
+        drops.push_back(r["drop"].get<double>());
+        if (r["drop"].get<double>() > 0.0 && r["p_value"].get<double>() < kAlpha) ++dropping;
+      }
+      const bool all_equal = std::equal(design.begin(), design.end(), reality.begin());
+      json test = nullptr;
+      if (!all_equal) {
+        const statistics::SignedRankTest t = statistics::wilcoxon_signed_rank(design, reality);
+        test = {{"V", t.statistic}, {"p_value", t.p_value}, {"exact", t.exact}};
+      }
+      cells.push_back({{"mission", m.key},
+                       {"condition", c},
+                       {"n", design.size()},
+                       {"design_model", box_document(m.key, c, design)},
+                       {"pseudo_reality", box_document(m.key, c, reality)},
+                       {"median_drop", statistics::median(drops)},
+                       {"designs_dropping", dropping},
+                       {"wilcoxon", std::move(test)}});
+      present.push_back(c);
+      design_medians.push_back(statistics::median(design));
+      reality_medians.push_back(statistics::median(reality));
+    }
+    const std::vector<double> before = condition_ranks(design_medians, m.maximise);
+    const std::vector<double> after = condition_ranks(reality_medians, m.maximise);
+    for (std::size_t i = 0; i < present.size(); ++i) {
+      ranks.push_back({{"mission", m.key},
+                       {"condition", present[i]},
+                       {"design_model_median", design_medians[i]},
+                       {"pseudo_reality_median", reality_medians[i]},
+                       {"design_model_rank", before[i]},
+                       {"pseudo_reality_rank", after[i]}});
+      for (std::size_t j = i + 1; j < present.size(); ++j)
+        if ((design_medians[i] - design_medians[j]) * (reality_medians[i] - reality_medians[j]) < 0.0)
+          inversions.push_back({{"mission", m.key}, {"a", present[i]}, {"b", present[j]},
+                                {"better_in_design_model", (design_medians[i] > design_medians[j]) == m.maximise ? present[i] : present[j]}});
+    }
+  }
+  const json& definition = plan.definition;
+  return {{"spec", plan.spec},
+          {"name", definition.is_object() ? definition.value("name", plan.spec) : plan.spec},
+          {"description", definition.is_object() ? definition.value("description", "") : ""},
+          {"samples", plan.samples},
+          {"definition", definition},
+          {"cells", std::move(cells)},
+          {"ranks", std::move(ranks)},
+          {"inversions", std::move(inversions)},
+          {"friedman", {{"design_model", friedman_document(a)}, {"pseudo_reality", friedman_document(a, pseudo_reality_score)}}},
+          {"reference", "Ligot & Birattari, Simulation-only experiments to mimic the effects of the reality gap in the "
+                        "automatic design of robot swarms, Swarm Intelligence 14, 2020"}};
 }
 
 json module_frequency(const Analysis& a) {
@@ -360,7 +491,11 @@ json experiment_report_document(Home& home, const storage::User& user, const std
     per_mission_spaces[d.plan.condition][mission] = {{"architectures", design::split_list(d.plan.architectures)},
                                                             {"flavours", design::split_list(d.plan.flavours)},
                                                             {"budget", d.plan.budget}};
-    if (d.stage == storage::DesignStage::done) design_list.push_back(design_document(d, mission, store));
+    if (d.stage == storage::DesignStage::done) {
+      const bool maximise =
+          std::find_if(a.missions.begin(), a.missions.end(), [&](const MissionInfo& m) { return m.key == mission; })->maximise;
+      design_list.push_back(design_document(d, mission, maximise, store));
+    }
   }
   for (const auto& d : design_list) a.cells[{d["mission"], d["condition"]}].designs.push_back(&d);
   for (const auto& c : a.conditions)
@@ -389,6 +524,7 @@ json experiment_report_document(Home& home, const storage::User& user, const std
   report["boxes"] = boxes_and_tests(a, report);
   report["friedman"] = friedman_document(a);
   report["module_frequency"] = module_frequency(a);
+  report["pseudo_reality"] = pseudo_reality_document(a, protocol);
   per_cell_tables(a, report);
   report["designs"] = std::move(design_list);  // last: the cells point into design_list until here
   return report;
@@ -455,6 +591,44 @@ std::vector<ReportFile> experiment_report_data_files(const json& document) {
       document["module_frequency"]);
   csv("architectures.csv", {"mission", "condition", "fsm", "bt", "nn"}, document["architectures"]);
   csv("wall_time.csv", {"mission", "condition", "designs", "runs", "wall_seconds"}, document["wall_time"]);
+  // The reality gap's tables, when the protocol asked for pseudo-realities.
+  if (const json& r = document.value("pseudo_reality", json(nullptr)); r.is_object()) {
+    json cells = json::array(), runs = json::array(), design_rows = json::array();
+    for (const auto& c : r["cells"]) {
+      json row{{"mission", c["mission"]}, {"condition", c["condition"]}, {"n", c["n"]},
+               {"design_model_median", c["design_model"]["median"]}, {"pseudo_reality_median", c["pseudo_reality"]["median"]},
+               {"median_drop", c["median_drop"]}, {"designs_dropping", c["designs_dropping"]},
+               {"p_value", c["wilcoxon"].is_null() ? json(nullptr) : c["wilcoxon"]["p_value"]}};
+      for (const auto& rank : r["ranks"])
+        if (rank["mission"] == c["mission"] && rank["condition"] == c["condition"]) {
+          row["design_model_rank"] = rank["design_model_rank"];
+          row["pseudo_reality_rank"] = rank["pseudo_reality_rank"];
+        }
+      cells.push_back(std::move(row));
+    }
+    for (const auto& d : document["designs"]) {
+      const json& p = d["pseudo_reality"];
+      if (p.is_null()) continue;
+      design_rows.push_back({{"design", d["id"]}, {"mission", d["mission"]}, {"condition", d["condition"]},
+                             {"replicate", d["replicate"]}, {"design_model_score", d["score"]},
+                             {"pseudo_reality_score", p["score"]}, {"drop", p["drop"]}, {"drop_low", p["drop_ci95"][0]},
+                             {"drop_high", p["drop_ci95"][1]}, {"relative_drop", p["relative_drop"]}, {"p_value", p["p_value"]}});
+      const std::size_t seeds = d["assessment_seeds"].size();
+      for (std::size_t i = 0; seeds > 0 && i < p["scores"].size(); ++i)
+        runs.push_back({{"design", d["id"]}, {"mission", d["mission"]}, {"condition", d["condition"]},
+                        {"replicate", d["replicate"]}, {"sample", i / seeds + 1}, {"seed", d["assessment_seeds"][i % seeds]},
+                        {"score", p["scores"][i]}});
+    }
+    csv("pseudo_reality.csv",
+        {"mission", "condition", "n", "design_model_median", "pseudo_reality_median", "median_drop", "designs_dropping",
+         "p_value", "design_model_rank", "pseudo_reality_rank"},
+        cells);
+    csv("pseudo_reality_designs.csv",
+        {"design", "mission", "condition", "replicate", "design_model_score", "pseudo_reality_score", "drop", "drop_low",
+         "drop_high", "relative_drop", "p_value"},
+        design_rows);
+    csv("pseudo_reality_runs.csv", {"design", "mission", "condition", "replicate", "sample", "seed", "score"}, runs);
+  }
   return files;
 }
 

@@ -28,13 +28,13 @@ namespace sd::cli {
 namespace {
 
 struct ExperimentOptions {
-  std::string name, file, missions, rename, project, seed;
-  int designs = 0, eval_seeds = 0;
+  std::string name, file, missions, rename, project, seed, pseudo_reality;
+  int designs = 0, eval_seeds = 0, samples = 0;
   double budget_scale = 1.0;
   bool evostick = false, dry_run = false, json = false;
   unsigned threads = 0;
   app::ClusterJobRequest job;  // a cluster project's sbatch settings
-  CLI::Option *designs_option = nullptr, *eval_seeds_option = nullptr, *scale_option = nullptr;
+  CLI::Option *designs_option = nullptr, *eval_seeds_option = nullptr, *scale_option = nullptr, *samples_option = nullptr;
 };
 
 std::string duration_text(double seconds) {
@@ -59,6 +59,8 @@ experiments::Protocol requested_protocol(const ExperimentOptions& o) {
   if (o.scale_option->count()) overrides.budget_scale = o.budget_scale;
   if (!o.seed.empty()) overrides.seed = app::parse_seed(o.seed);
   if (!o.rename.empty()) overrides.name = o.rename;
+  if (!o.pseudo_reality.empty()) overrides.pseudo_reality = o.pseudo_reality;
+  if (o.samples_option->count()) overrides.pseudo_reality_samples = o.samples;
   return experiments::with_overrides(std::move(protocol), overrides);
 }
 
@@ -67,6 +69,9 @@ void print_plan(const app::PlannedExperiment& plan) {
   std::cout << "Experiment " << p.name << ": " << p.missions.size() << " missions, " << p.designs
             << " designs per condition, budget scale " << format_number(p.budget_scale) << ", each design assessed on "
             << p.assessment_seeds << " fresh seeds\n";
+  if (p.pseudo_reality)
+    std::cout << "  and on the same seeds in samples 1-" << p.pseudo_reality->samples << " of pseudo-reality "
+              << p.pseudo_reality->spec << " (the reality gap: the drop and the conditions' ranks in the report)\n";
   for (const auto& d : plan.designs)
     if (d.replicate == 1)
       std::cout << "  " << app::mission_label(d.mission) << " / " << d.condition << ": "
@@ -217,6 +222,18 @@ void print_headline(const nlohmann::json& doc) {
     if (!w["better"].is_null())
       std::cout << "  " << w["mission"].get<std::string>() << ": " << w["better"].get<std::string>()
                 << " is better (Wilcoxon rank-sum p = " << format_number(w["p_value"].get<double>()) << ")\n";
+  if (const auto& r = doc.value("pseudo_reality", nlohmann::json(nullptr)); r.is_object()) {
+    std::cout << "  In pseudo-reality " << r["spec"].get<std::string>() << " (samples 1-" << r["samples"] << "):\n";
+    for (const auto& c : r["cells"])
+      std::cout << "    " << c["mission"].get<std::string>() << " / " << c["condition"].get<std::string>() << ": median "
+                << format_number(c["pseudo_reality"]["median"].get<double>()) << " (design model "
+                << format_number(c["design_model"]["median"].get<double>()) << "), median drop "
+                << format_number(c["median_drop"].get<double>()) << ", paired Wilcoxon p = "
+                << (c["wilcoxon"].is_null() ? std::string("n/a") : format_number(c["wilcoxon"]["p_value"].get<double>())) << "\n";
+    for (const auto& i : r["inversions"])
+      std::cout << "    " << i["mission"].get<std::string>() << ": " << i["a"].get<std::string>() << " and "
+                << i["b"].get<std::string>() << " change ranks in the pseudo-realities\n";
+  }
   if (const auto& f = doc["friedman"]; !f.is_null()) {
     std::cout << "  Friedman across missions: p = " << (f["p_value"].is_null() ? "n/a" : format_number(f["p_value"].get<double>()))
               << "; expected ranks:";
@@ -257,6 +274,11 @@ CommandRegistrar registrar{45, [](CLI::App& app, Context&) {
       cmd->add_option("--eval-seeds", o->eval_seeds, "Fresh seeds each final design is assessed on (default 20)");
   cmd->add_option("--seed", o->seed, "Seed every design's seed derives from (default 1)");
   cmd->add_option("--name", o->rename, "Store it under another name (to keep several variants of one protocol)");
+  cmd->add_option("--pseudo-reality", o->pseudo_reality,
+                  "Also assess every final design in this pseudo-reality (a shipped name, see swarmdesign "
+                  "pseudo-realities, or a file)");
+  o->samples_option = cmd->add_option("--pseudo-reality-samples", o->samples,
+                                      "Pseudo-reality samples 1..N each design also runs in (default 20)");
   cmd->add_flag("--evostick", o->evostick, "Add the EvoStick baseline as a further condition on every mission");
   cmd->add_option("--project", o->project, "Run it in this project (default: the active one)");
   cmd->add_option("--threads", o->threads, "Simulations in parallel (default: all cores)")->check(CLI::NonNegativeNumber);
@@ -274,10 +296,16 @@ CommandRegistrar registrar{45, [](CLI::App& app, Context&) {
       "with the same results. Budgets below the optimiser's minimum are raised to it (with a note).\n"
       "In a cluster project the designs go to Slurm as one job array (one task per design, with the\n"
       "Slurm options above); each comes home when its task ends and is assessed here. Run the same\n"
-      "command again to submit what a cut-short array left: those designs resume.\n\n"
+      "command again to submit what a cut-short array left: those designs resume.\n"
+      "With --pseudo-reality (or \"pseudo_reality\": {\"spec\": ..., \"samples\": N} in a protocol file)\n"
+      "each final design also runs on its assessment seeds in pseudo-reality samples 1..N (robot\n"
+      "models drawn around the design model, Ligot & Birattari 2020); the report then shows each\n"
+      "condition's scores in both side by side, the drop with its test, and how the conditions'\n"
+      "ranks change. --json lists each experiment's pseudo_reality.\n\n"
       "Examples:\n  swarmdesign experiment validation --dry-run\n"
       "  swarmdesign experiment combination --missions aac,foraging --designs 3 --budget-scale 0.05\n"
-      "  swarmdesign experiment --file my-protocol.json");
+      "  swarmdesign experiment --file my-protocol.json\n"
+      "  swarmdesign experiment validation --missions aac --designs 5 --pseudo-reality sampled-around");
   cmd->callback([o] { run_experiment_command(*o); });
 
   auto r = std::make_shared<ReportOptions>();

@@ -118,6 +118,21 @@ Condition condition_from_json(const nlohmann::json& c, const std::string& path) 
   return condition;
 }
 
+constexpr int kMaxSamples = 1000;
+
+PseudoRealityPlan pseudo_reality_from_json(const nlohmann::json& r) {
+  const std::string path = "pseudo_reality";
+  only_fields(r, path, {"spec", "samples", "definition"});
+  PseudoRealityPlan plan;
+  plan.spec = text_field(r, path, "spec");
+  if (r.contains("samples")) plan.samples = static_cast<int>(integer_field(r["samples"], join(path, "samples"), 1, kMaxSamples));
+  if (r.contains("definition")) {
+    if (!r["definition"].is_object()) fail(join(path, "definition"), "must be an object (a pseudo-reality specification)");
+    plan.definition = r["definition"];
+  }
+  return plan;
+}
+
 }  // namespace
 
 std::vector<std::string> builtin_protocol_names() { return {"validation", "combination", "architecture"}; }
@@ -145,7 +160,7 @@ Protocol builtin_protocol(std::string_view name, bool with_evostick) {
 }
 
 Protocol protocol_from_json(const nlohmann::json& document) {
-  only_fields(document, "", {"name", "designs", "assessment_seeds", "budget_scale", "seed", "missions"});
+  only_fields(document, "", {"name", "designs", "assessment_seeds", "budget_scale", "seed", "missions", "pseudo_reality"});
   Protocol protocol;
   protocol.name = text_field(document, "", "name");
   check_name(protocol.name, "name");
@@ -184,6 +199,7 @@ Protocol protocol_from_json(const nlohmann::json& document) {
     }
     protocol.missions.push_back(std::move(plan));
   }
+  if (document.contains("pseudo_reality")) protocol.pseudo_reality = pseudo_reality_from_json(document["pseudo_reality"]);
   return protocol;
 }
 
@@ -201,12 +217,20 @@ nlohmann::json to_json(const Protocol& protocol) {
     }
     missions.push_back({{"mission", m.mission}, {"budget", m.budget}, {"conditions", std::move(conditions)}});
   }
-  return {{"name", protocol.name},
-          {"designs", protocol.designs},
-          {"assessment_seeds", protocol.assessment_seeds},
-          {"budget_scale", protocol.budget_scale},
-          {"seed", protocol.seed},
-          {"missions", std::move(missions)}};
+  nlohmann::json document{{"name", protocol.name},
+                           {"designs", protocol.designs},
+                           {"assessment_seeds", protocol.assessment_seeds},
+                           {"budget_scale", protocol.budget_scale},
+                           {"seed", protocol.seed},
+                           {"missions", std::move(missions)}};
+  // Only when asked for: a protocol without it is stored as before (an interrupted experiment
+  // of an older version resumes, its stored protocol being compared as text).
+  if (const auto& r = protocol.pseudo_reality) {
+    nlohmann::json reality{{"spec", r->spec}, {"samples", r->samples}};
+    if (!r->definition.is_null()) reality["definition"] = r->definition;
+    document["pseudo_reality"] = std::move(reality);
+  }
+  return document;
 }
 
 Protocol read_protocol_file(const std::string& path) {
@@ -254,6 +278,18 @@ Protocol with_overrides(Protocol protocol, const ProtocolOverrides& o) {
     protocol.budget_scale = *o.budget_scale;
   }
   if (o.seed) protocol.seed = *o.seed;
+  if (o.pseudo_reality) {
+    if (o.pseudo_reality->empty()) throw ProtocolError("--pseudo-reality: empty name");
+    if (!protocol.pseudo_reality || protocol.pseudo_reality->spec != *o.pseudo_reality)
+      protocol.pseudo_reality = PseudoRealityPlan{*o.pseudo_reality, protocol.pseudo_reality ? protocol.pseudo_reality->samples : 20, nullptr};
+  }
+  if (o.pseudo_reality_samples) {
+    if (!protocol.pseudo_reality)
+      throw ProtocolError("--pseudo-reality-samples: the protocol has no pseudo_reality; name one with --pseudo-reality");
+    if (*o.pseudo_reality_samples < 1 || *o.pseudo_reality_samples > kMaxSamples)
+      throw ProtocolError("--pseudo-reality-samples must be between 1 and " + std::to_string(kMaxSamples));
+    protocol.pseudo_reality->samples = *o.pseudo_reality_samples;
+  }
   if (o.missions) {
     std::vector<MissionPlan> kept;
     for (const auto& name : *o.missions) {

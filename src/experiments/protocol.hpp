@@ -37,6 +37,17 @@ struct MissionPlan {
   std::vector<Condition> conditions;
 };
 
+/// Assessment in pseudo-realities (Ligot & Birattari 2020): every final design also runs, on
+/// the same assessment seeds, in samples 1..samples of a pseudo-reality specification.
+struct PseudoRealityPlan {
+  std::string spec;             // a shipped specification's name or a specification file
+  int samples = 20;             // samples 1, 2, ..., samples
+  /// The specification itself, filled in when the experiment is planned (the app layer reads
+  /// `spec`), so that the experiment resumes with the very robot models it started with; null
+  /// until then. A protocol file may also write it inline.
+  nlohmann::json definition;
+};
+
 struct Protocol {
   std::string name;
   int designs = 10;               // independent designs per mission and condition
@@ -44,6 +55,7 @@ struct Protocol {
   double budget_scale = 1.0;      // every budget is multiplied by it
   std::uint64_t seed = 1;         // every design's seed derives from it
   std::vector<MissionPlan> missions;
+  std::optional<PseudoRealityPlan> pseudo_reality;  // none: the design model only
 };
 
 /// The thesis' "validation", "combination", "architecture", optionally with EvoStick as a
@@ -67,6 +79,8 @@ struct ProtocolOverrides {
   std::optional<double> budget_scale;
   std::optional<std::uint64_t> seed;
   std::optional<std::string> name;
+  std::optional<std::string> pseudo_reality;  // --pseudo-reality SPEC (its samples: 20 unless given)
+  std::optional<int> pseudo_reality_samples;  // --pseudo-reality-samples N
 };
 /// ProtocolError for a mission the protocol does not have or a value out of its domain.
 Protocol with_overrides(Protocol protocol, const ProtocolOverrides& overrides);

@@ -228,15 +228,21 @@ void Experiments::add_wall_seconds(std::int64_t design_id, double seconds) {
 }
 
 void Experiments::record_assessment(std::int64_t design_id, const std::vector<std::uint64_t>& seeds,
-                                    const std::vector<double>& scores) {
+                                    const std::vector<double>& scores, const std::vector<RealityScore>& reality) {
   require_design(design_id);
   Database& db = workspace_.database();
   Transaction transaction(db);
   db.prepare("DELETE FROM experiment_assessments WHERE design_id = ?").bind(1, design_id).run();
+  db.prepare("DELETE FROM experiment_reality_assessments WHERE design_id = ?").bind(1, design_id).run();
   auto insert = db.prepare("INSERT INTO experiment_assessments (design_id, seed, score) VALUES (?, ?, ?)");
   for (std::size_t i = 0; i < seeds.size(); ++i) {
     insert.bind(1, design_id).bind(2, static_cast<std::int64_t>(seeds[i])).bind(3, scores.at(i)).run();
   }
+  auto insert_reality =
+      db.prepare("INSERT INTO experiment_reality_assessments (design_id, sample, seed, score) VALUES (?, ?, ?, ?)");
+  for (const RealityScore& r : reality)
+    insert_reality.bind(1, design_id).bind(2, static_cast<std::int64_t>(r.sample)).bind(3, static_cast<std::int64_t>(r.seed))
+        .bind(4, r.score).run();
   db.prepare("UPDATE experiment_designs SET stage = 'done' WHERE id = ?").bind(1, design_id).run();
   transaction.commit();
 }
@@ -248,6 +254,17 @@ std::vector<std::pair<std::uint64_t, double>> Experiments::assessments(std::int6
       "SELECT seed, score FROM experiment_assessments WHERE design_id = ? ORDER BY seed");
   query.bind(1, design_id);
   while (query.step()) scores.emplace_back(static_cast<std::uint64_t>(query.integer(0)), query.real(1));
+  return scores;
+}
+
+std::vector<RealityScore> Experiments::reality_assessments(std::int64_t design_id) {
+  require_design(design_id);
+  std::vector<RealityScore> scores;
+  auto query = workspace_.database().prepare(
+      "SELECT sample, seed, score FROM experiment_reality_assessments WHERE design_id = ? ORDER BY sample, seed");
+  query.bind(1, design_id);
+  while (query.step())
+    scores.push_back({static_cast<std::uint64_t>(query.integer(0)), static_cast<std::uint64_t>(query.integer(1)), query.real(2)});
   return scores;
 }
 

@@ -54,6 +54,12 @@ struct ExperimentDesign {
   std::optional<std::int64_t> reused_from;  // the twin whose result it took
 };
 
+/// A final design's score in one pseudo-reality sample with one seed.
+struct RealityScore {
+  std::uint64_t sample = 0, seed = 0;
+  double score = 0.0;
+};
+
 class Experiments {
  public:
   /// The experiments of a project obtained through Projects (so already owned by the user).
@@ -90,10 +96,13 @@ class Experiments {
   void design_finished(std::int64_t design_id, const std::string& configuration, double design_score,
                        std::int64_t runs_used);
   void add_wall_seconds(std::int64_t design_id, double seconds);
-  /// Every assessment score at once, and the design is done.
+  /// Every assessment score at once (in the design model, and in pseudo-reality samples when
+  /// the protocol asks for them), and the design is done: one transaction.
   void record_assessment(std::int64_t design_id, const std::vector<std::uint64_t>& seeds,
-                         const std::vector<double>& scores);
+                         const std::vector<double>& scores, const std::vector<RealityScore>& reality = {});
   std::vector<std::pair<std::uint64_t, double>> assessments(std::int64_t design_id);
+  /// Its pseudo-reality scores, by sample then seed (none for a protocol without them).
+  std::vector<RealityScore> reality_assessments(std::int64_t design_id);
 
  private:
   Lease lease();

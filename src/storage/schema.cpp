@@ -200,6 +200,17 @@ CREATE TABLE sign_in_failures (
   locked_until INTEGER NOT NULL DEFAULT 0
 );
 )sql",
+    // 7: an experiment's final designs also scored in pseudo-reality samples (Ligot & Birattari
+    // 2020), on the same seeds as in the design model; none for older experiments.
+    R"sql(
+CREATE TABLE experiment_reality_assessments (
+  design_id INTEGER NOT NULL REFERENCES experiment_designs(id) ON DELETE CASCADE,
+  sample    INTEGER NOT NULL CHECK (sample >= 1),
+  seed      INTEGER NOT NULL,
+  score     REAL    NOT NULL,
+  PRIMARY KEY (design_id, sample, seed)
+);
+)sql",
 };
 
 }  // namespace

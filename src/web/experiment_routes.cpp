@@ -70,7 +70,7 @@ experiments::Protocol requested_protocol(const json& body) {
 app::PlannedExperiment planned(Call& call, const experiments::Protocol& protocol) {
   const app::FileScope scope = app::FileScope::own_projects(call.home, call.user);
   for (const auto& m : protocol.missions) app::load_requested_mission(m.mission, scope);
-  return app::plan_experiment(protocol);
+  return app::plan_experiment(protocol, scope);
 }
 
 /// The project's experiments, each saying whether this server runs it.

@@ -119,5 +119,53 @@ TEST(experiments_Protocol, MalformedFieldsAreNamedByTheirPath) {
   EXPECT_NE(error_of(name).find("must start with a letter"), std::string::npos) << error_of(name);
 }
 
+TEST(experiments_Protocol, PseudoRealityIsOptionalAndCheckedFieldByField) {
+  const json good = json::parse(R"({"name": "mine", "missions": [{"mission": "aac", "budget": 1000,
+      "conditions": [{"name": "a", "architectures": ["fsm"], "flavours": ["chocolate"]}]}],
+      "pseudo_reality": {"spec": "sampled-around", "samples": 5}})");
+  const Protocol p = protocol_from_json(good);
+  ASSERT_TRUE(p.pseudo_reality);
+  EXPECT_EQ(p.pseudo_reality->spec, "sampled-around");
+  EXPECT_EQ(p.pseudo_reality->samples, 5);
+  EXPECT_TRUE(p.pseudo_reality->definition.is_null());
+  EXPECT_EQ(to_json(protocol_from_json(to_json(p))), to_json(p));
+  json defaulted = good;
+  defaulted["pseudo_reality"].erase("samples");
+  EXPECT_EQ(protocol_from_json(defaulted).pseudo_reality->samples, 20);
+  // Without it, the document is the one older versions stored (an experiment resumes by it).
+  json without = good;
+  without.erase("pseudo_reality");
+  EXPECT_FALSE(protocol_from_json(without).pseudo_reality);
+  EXPECT_FALSE(to_json(protocol_from_json(without)).contains("pseudo_reality"));
+
+  const std::vector<std::pair<json, std::string>> cases = {
+      {json("sampled-around"), "protocol: pseudo_reality: must be an object"},
+      {json::object(), "protocol: pseudo_reality.spec: is missing"},
+      {{{"spec", ""}}, "protocol: pseudo_reality.spec: must be a non-empty string"},
+      {{{"spec", "x"}, {"samples", 0}}, "protocol: pseudo_reality.samples: must be between 1 and 1000, not 0"},
+      {{{"spec", "x"}, {"samples", "20"}}, "protocol: pseudo_reality.samples: must be an integer"},
+      {{{"spec", "x"}, {"sample", 2}}, "protocol: pseudo_reality.sample: unknown field"},
+      {{{"spec", "x"}, {"definition", 3}}, "protocol: pseudo_reality.definition: must be an object (a pseudo-reality specification)"},
+  };
+  for (const auto& [value, message] : cases) {
+    json bad = good;
+    bad["pseudo_reality"] = value;
+    EXPECT_EQ(error_of(bad), message);
+  }
+
+  // The command line adds one to any protocol, or changes its samples.
+  ProtocolOverrides o;
+  o.pseudo_reality = "iridia-transfer";
+  o.pseudo_reality_samples = 3;
+  const Protocol added = with_overrides(builtin_protocol("validation"), o);
+  ASSERT_TRUE(added.pseudo_reality);
+  EXPECT_EQ(added.pseudo_reality->spec, "iridia-transfer");
+  EXPECT_EQ(added.pseudo_reality->samples, 3);
+  ProtocolOverrides only_samples;
+  only_samples.pseudo_reality_samples = 3;
+  EXPECT_EQ(sd::test::refusal_of<ProtocolError>([&] { return with_overrides(builtin_protocol("validation"), only_samples); }),
+            "--pseudo-reality-samples: the protocol has no pseudo_reality; name one with --pseudo-reality");
+}
+
 }  // namespace
 }  // namespace sd::experiments

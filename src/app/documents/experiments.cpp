@@ -28,6 +28,11 @@ nlohmann::json experiments_document(const std::vector<ExperimentProgress>& exper
                         {"state", storage::to_string(e.experiment.state)},
                         {"designs", e.designs},
                         {"designs_done", e.designs_done}};
+    // Whether its designs are also assessed in pseudo-realities (and in how many samples).
+    const auto protocol = nlohmann::json::parse(e.experiment.protocol, nullptr, false);
+    if (protocol.is_object() && protocol.contains("pseudo_reality"))
+      item["pseudo_reality"] = {{"spec", protocol["pseudo_reality"].value("spec", "")},
+                                {"samples", protocol["pseudo_reality"].value("samples", 0)}};
     if (e.current)
       item["current"] = {{"mission", mission_label(e.current->plan.mission)},     {"condition", e.current->plan.condition},
                          {"replicate", e.current->plan.replicate}, {"stage", storage::to_string(e.current->stage)},
