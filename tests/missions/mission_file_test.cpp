@@ -115,6 +115,20 @@ TEST(MissionFile, EveryMalformedFieldIsNamed) {
   expect_error(replace(kValid, "\"arena\": {", "\"arena\": {\"lights\": [{\"position\": [0, 0, 1], \"intensity\": -1}], "),
                "arena.lights[0].intensity: must not be negative");
   expect_error(replace(kValid, "\"name\": \"tiny\",", "\"name\": \"tiny\", \"robot\": {\"rab_loss\": 2},"), "robot.rab_loss: must be in [0, 1]");
+  expect_error(replace(kValid, "\"name\": \"tiny\",", "\"name\": \"tiny\", \"robot\": {\"rab_noise\": -0.1},"), "robot.rab_noise: must not be negative");
+  expect_error(replace(kValid, "\"name\": \"tiny\",", "\"name\": \"tiny\", \"robot\": {\"wheel_deviation\": 1},"), "robot.wheel_deviation: must be in [0, 1)");
+  expect_error(replace(kValid, "\"name\": \"tiny\",", "\"name\": \"tiny\", \"robot\": {\"camera_nois\": 0.1},"), "robot.camera_nois: unknown field");
+  expect_error(replace(kValid, "\"name\": \"tiny\",", "\"name\": \"tiny\", \"robot\": [1],"), "robot: expected an object");
+}
+
+TEST(MissionFile, TheRobotSectionSetsEveryKnobOfTheRobotModel) {
+  // Every knob a pseudo-reality may vary can also be a mission's own design model.
+  std::string robot = "{";
+  for (const RobotKnob& knob : kRobotKnobs) robot += (robot.size() > 1 ? ", \"" : "\"") + std::string(knob.name) + "\": 0.25";
+  robot += "}";
+  const Mission m = parse_mission(replace(kValid, "\"name\": \"tiny\",", "\"name\": \"tiny\", \"robot\": " + robot + ","), "test");
+  for (const RobotKnob& knob : kRobotKnobs) EXPECT_EQ(m.robot.*(knob.member), 0.25) << knob.name;
+  EXPECT_NE(m.digest, parse_mission(kValid, "test").digest);
 }
 
 TEST(MissionFile, PatchesAndStartRegionsMustBeInTheArena) {
