@@ -126,7 +126,8 @@ void read_arena(const Field& f, Mission& m) {
 
 void read_robot_model(const Field& f, RobotModel& r) {
   f.expect_object();
-  for (const auto& [key, value] : f.raw().items()) {
+  for (const auto& item : f.raw().items()) {
+    const std::string& key = item.key();
     const auto knob = std::find_if(kRobotKnobs.begin(), kRobotKnobs.end(), [&](const RobotKnob& k) { return k.name == key; });
     if (knob == kRobotKnobs.end()) f.at(key).fail("unknown field");
     const double v = f.at(key).number();

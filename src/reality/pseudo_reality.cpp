@@ -64,7 +64,7 @@ std::string optional_text(const json& doc, const char* key) {
 
 /// The interval [lo, hi] kept within the knob's domain (an "around" law next to a bound).
 void clamp_to_domain(const RobotKnob& knob, double& lo, double& hi) {
-  double floor = 0.0, ceiling = std::numeric_limits<double>::infinity();
+  double floor = 0.0, ceiling = std::numeric_limits<double>::max();  // finite: a sample is a number
   if (knob.domain == KnobDomain::Probability) ceiling = 1.0;
   if (knob.domain == KnobDomain::Deviation) ceiling = std::nextafter(1.0, 0.0);
   lo = std::clamp(lo, floor, ceiling);
@@ -95,7 +95,9 @@ PseudoRealitySpec parse_pseudo_reality(const std::string& text, const std::strin
     const json& knobs = doc.at("knobs");
     if (!knobs.is_object()) fail("knobs", "expected an object");
     spec.laws.assign(kRobotKnobs.size(), std::nullopt);
-    for (const auto& [key, value] : knobs.items()) {
+    for (const auto& item : knobs.items()) {
+      const std::string& key = item.key();
+      const nlohmann::json& value = item.value();
       const auto at = std::find_if(kRobotKnobs.begin(), kRobotKnobs.end(), [&](const RobotKnob& k) { return k.name == key; });
       if (at == kRobotKnobs.end()) fail("knobs." + key, "unknown knob");
       spec.laws[static_cast<std::size_t>(at - kRobotKnobs.begin())] = read_law(*at, value, "knobs." + key);
