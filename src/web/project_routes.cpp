@@ -2,6 +2,7 @@
 // backend, app/design_backends.hpp, whoever runs them), and control software saved in a project.
 #include <charconv>
 
+#include "app/design_assessment.hpp"
 #include "app/design_backends.hpp"
 #include "app/documents.hpp"
 #include "app/errors.hpp"
@@ -159,6 +160,21 @@ void add_project_routes(Routes& routes) {
     doc["design"] = target.design_id ? json(*target.design_id) : json();
     if (scores.size() > 1) doc["sd"] = statistics::sample_standard_deviation(scores);
     return doc;
+  });
+
+  // A design's best across the reality gap (issue #46): assessed in a pseudo-reality (a shipped
+  // one or the user's own file) on seeds 1-10 of the design model and of samples 1-20 unless
+  // asked otherwise, kept as assessment.json in the design's folder (app/design_assessment).
+  routes.post(project + "/designs/([0-9]{1,18})/assessment", [](Call& call) -> json {
+    app::DesignAssessmentRequest request;
+    request.spec = text_field(call.body, "spec");
+    if (call.body.contains("samples") && !call.body.at("samples").is_null()) request.samples = text_field(call.body, "samples");
+    if (call.body.contains("seeds") && !call.body.at("seeds").is_null()) request.seeds = text_field(call.body, "seeds");
+    return app::assess_project_design(call.home, call.user, call.match(1), design_number(call.match(2)), request,
+                                      app::FileScope::own_projects(call.home, call.user));
+  });
+  routes.get(project + "/designs/([0-9]{1,18})/assessment", [](Call& call) -> json {
+    return app::project_design_assessment(call.home, call.user, call.match(1), design_number(call.match(2)));
   });
 
   // Two designs' bests on the same fresh seeds, with the paired test an experiment's report uses.

@@ -28,6 +28,8 @@
 #include "app/evaluation_job.hpp"
 #include "app/experiment_job.hpp"
 #include "app/experiment_report.hpp"
+#include "app/pseudo_realities.hpp"
+#include "reality/pseudo_reality.hpp"
 #include "control/config_string.hpp"
 #include "core/bounded_file.hpp"
 #include "evaluation/simulation.hpp"
@@ -925,6 +927,110 @@ TEST_F(WebServer, TheServerBindsTheLoopbackAddressByDefault) {
   }();
   EXPECT_TRUE(std::regex_search(out, std::regex(R"(http://127\.0\.0\.1:\d+/)"))) << out;
   EXPECT_EQ(out.find("Warning"), std::string::npos) << out;
+}
+
+/// One line naming `field`, with status 400.
+void expect_field_refused(const Answer& a, const std::string& field) {
+  EXPECT_EQ(a.status, 400) << a.text;
+  ASSERT_TRUE(a.body.is_object()) << a.text;
+  const std::string error = a.body.value("error", "");
+  EXPECT_EQ(error.rfind(field, 0), 0u) << "the error names " << field << ": " << error;
+  EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+}
+
+TEST_F(WebServer, AnExecRunsInAPseudoRealitySampleAndScoresWhatThatRobotModelScores) {
+  alice_project("gap");
+  const std::string mission = alice_->get("/api/projects").body.at(0).at("mission");
+  const Answer listed = alice_->get("/api/pseudo-realities");
+  ASSERT_EQ(listed.status, 200) << listed.text;
+  std::vector<std::string> names;
+  for (const json& p : listed.body) names.push_back(p.at("name"));
+  EXPECT_NE(std::find(names.begin(), names.end(), "sampled-around"), names.end()) << listed.text;
+
+  const Answer started =
+      alice_->post("/api/runs", {{"text", kFsm}, {"mission", mission}, {"seed", 3}, {"pseudo_reality", "sampled-around"}, {"sample", 4}});
+  ASSERT_EQ(started.status, 200) << started.text;
+  EXPECT_EQ(started.body.at("pseudo_reality").at("sample"), 4);
+  const Answer stream = alice_->stream("/api/runs/" + std::to_string(started.body.at("id").get<std::int64_t>()) + "/stream");
+  const auto end = events(stream.text, "end");
+  ASSERT_EQ(end.size(), 1u) << stream.text.substr(0, 300);
+  const Mission design_model = load_mission(mission);
+  const Mission sample = app::in_pseudo_reality(design_model, *builtin_pseudo_reality("sampled-around"), 4);
+  EXPECT_EQ(json(sample.robot.wheel_noise), started.body.at("pseudo_reality").at("robot").at("wheel_noise"));
+  EXPECT_NE(sample.robot.wheel_noise, design_model.robot.wheel_noise) << "the sample is another robot model";
+  const double evaluated = app::score_seeds(sample, parse_control_software(kFsm), {3}).at(0);
+  const double streamed = end[0].at("score").get<double>();
+  EXPECT_EQ(std::memcmp(&streamed, &evaluated, sizeof(double)), 0) << streamed << " vs " << evaluated;
+  // Without one, the run is the design model's, as before.
+  EXPECT_TRUE(alice_->post("/api/runs", {{"text", kFsm}, {"mission", mission}, {"seed", 3}}).body.at("pseudo_reality").is_null());
+
+  const json run{{"text", kFsm}, {"mission", mission}, {"seed", 3}};
+  const auto with = [&](json extra) {
+    json body = run;
+    body.update(extra);
+    return alice_->post("/api/runs", body);
+  };
+  expect_field_refused(with({{"pseudo_reality", "no-such-world"}}), "pseudo_reality");
+  expect_field_refused(with({{"pseudo_reality", "sampled-around"}, {"sample", 0}}), "sample");
+  expect_field_refused(with({{"pseudo_reality", "sampled-around"}, {"sample", "x"}}), "sample");
+  expect_field_refused(with({{"sample", 2}}), "sample");
+  // Another user's file, or one outside any project, is refused in the same words as a missing one.
+  const auto alices = root_ / "home" / "users" / "alice" / "projects" / "gap" / "world.json";
+  std::ofstream(alices) << R"({"name": "mine", "knobs": {"wheel_noise": 0.2}})";
+  EXPECT_EQ(with({{"pseudo_reality", alices.string()}, {"sample", 1}}).status, 200);
+  const Answer from_bob = bob_->post("/api/runs", {{"text", kFsm}, {"mission", "aac"}, {"seed", 3}, {"pseudo_reality", alices.string()}});
+  expect_field_refused(from_bob, "pseudo_reality");
+  const auto elsewhere = (root_ / "home" / "users" / "alice" / "none.json").string();
+  const Answer missing = bob_->post("/api/runs", {{"text", kFsm}, {"mission", "aac"}, {"seed", 3}, {"pseudo_reality", elsewhere}});
+  std::string said = from_bob.body.value("error", "");
+  said.replace(said.find(alices.string()), alices.string().size(), elsewhere);
+  EXPECT_EQ(missing.body.value("error", ""), said);
+}
+
+TEST_F(WebServer, ADesignsBestIsAssessedInAPseudoRealityKeptInItsFolderAndShownToItsOwnerOnly) {
+  const auto folder = root_ / "home" / "users" / "alice" / "projects" / "r";
+  std::filesystem::create_directories(folder);
+  ASSERT_EQ(alice_->post("/api/projects", {{"name", "r"}, {"mission", write_short_mission(folder, 2).string()}, {"budget", "1100"}}).status, 200);
+  const Answer started = alice_->post("/api/projects/r/designs", {{"flavours", "chocolate"}, {"architectures", "fsm"}, {"seed", 3}});
+  ASSERT_EQ(started.status, 200) << started.text;
+  const std::int64_t id = started.body.at("id");
+  ASSERT_TRUE(wait_until([&] { return alice_->get("/api/projects/r/status").body.at("design").at("state") == "finished"; },
+                         std::chrono::seconds(120)));
+  const std::string route = "/api/projects/r/designs/" + std::to_string(id) + "/assessment";
+  EXPECT_EQ(alice_->get(route).status, 404) << "not assessed yet";
+
+  const Answer assessed = alice_->post(route, {{"spec", "sampled-around"}, {"samples", "1-3"}, {"seeds", "1-4"}});
+  ASSERT_EQ(assessed.status, 200) << assessed.text;
+  const json& software = assessed.body.at("software").at(0);
+  EXPECT_EQ(assessed.body.at("samples").size(), 3u);
+  EXPECT_EQ(assessed.body.at("seeds").size(), 4u);
+  EXPECT_EQ(software.at("runs").size(), 4u * (1 + 3));
+  for (const char* key : {"design_mean", "pseudo_reality_mean", "drop", "drop_ci95", "relative_drop", "p_value"})
+    EXPECT_TRUE(software.contains(key)) << key;
+  const auto rows = alice_->get("/api/projects/r/designs").body;
+  for (const json& row : rows) {
+    if (row.at("id") == id) {
+      EXPECT_EQ(software.at("control_software"), row.at("best_configuration"));
+    }
+  }
+  // Kept in the design's folder, and served until assessed again.
+  const auto file = folder / "designs" / std::to_string(id) / "assessment.json";
+  ASSERT_TRUE(std::filesystem::exists(file)) << file;
+  const Answer again = alice_->get(route);
+  ASSERT_EQ(again.status, 200);
+  EXPECT_EQ(again.body, assessed.body);
+
+  // Bob reaches none of it; bad requests say which field is wrong; no CSRF token, no assessment.
+  EXPECT_EQ(bob_->get(route).status, 404);
+  EXPECT_EQ(bob_->post(route, {{"spec", "sampled-around"}}).status, 404);
+  EXPECT_EQ(alice_->post(route, {{"spec", "sampled-around"}}, false).status, 403);
+  EXPECT_EQ(alice_->post("/api/projects/r/designs/999/assessment", {{"spec", "sampled-around"}}).status, 404);
+  expect_field_refused(alice_->post(route, {{"samples", "1-2"}}), "spec");
+  expect_field_refused(alice_->post(route, {{"spec", "no-such-world"}}), "spec");
+  expect_field_refused(alice_->post(route, {{"spec", "sampled-around"}, {"samples", "0"}}), "samples");
+  expect_field_refused(alice_->post(route, {{"spec", "sampled-around"}, {"seeds", "x"}}), "seeds");
+  expect_field_refused(alice_->post(route, {{"spec", "sampled-around"}, {"samples", "1-20"}, {"seeds", "1-1000"}}), "samples");
+  EXPECT_EQ(alice_->get(route).body, assessed.body) << "a refused request leaves the last assessment";
 }
 
 }  // namespace
