@@ -203,6 +203,28 @@ std::vector<CliCase> argument_cases(const Inputs& in) {
       // Whether an address can be listened on is the machine's state (1), as a port in use.
       {{"run-exp", "--host", "not an address"}, "", 1, "cannot listen on not an address"},
       {{"run-exp", "--web-root", absent}, "", 1, absent + " is not a folder"},
+      // Across the reality gap: assess, pseudo-realities, robust designs, exported samples.
+      {{"assess", "--mission", "aac"}, "", 2, "nothing to assess"},
+      {with_fsm({"assess"}), "", 2, "--mission is required"},
+      {with_fsm({"assess", "--mission", "aac", "--pseudo-reality", "nope"}), "", 2, "unknown pseudo-reality 'nope'"},
+      {with_fsm({"assess", "--mission", "aac", "--samples", "0-3"}), "", 2, "numbered from 1"},
+      {with_fsm({"assess", "--mission", "aac", "--samples", "1-20000"}), "", 2, "at most 10,000 samples"},
+      {with_fsm({"assess", "--mission", "aac", "--samples", "x"}), "", 2, "samples 'x'"},
+      {with_fsm({"assess", "--mission", "aac", "--seeds", "-1"}), "", 2, "seeds '-1'"},
+      {with_fsm({"assess", "--mission", "aac", "--threads", "-2"}), "", 2, "--threads"},
+      {with_fsm({"assess", "--mission", "aac", "--seeds", "1-1000000", "--samples", "1-10000"}), "", 2, "at most 10,000,000"},
+      {{"assess", "--design", absent}, "", 1, absent},
+      {{"pseudo-realities", "nope"}, "", 2, "unknown pseudo-reality 'nope'"},
+      {{"pseudo-realities", "sampled-around", "--samples", "0"}, "", 2, "numbered from 1"},
+      {{"design", "--mission", "aac", "--budget", "1000", "--pseudo-reality-samples", "1-3", "--out", (in.scratch / "d").string()},
+       "", 2, "needs --pseudo-realities"},
+      {{"design", "--mission", "aac", "--budget", "2000", "--fsm", "--chocolate", "--pseudo-realities", "nope", "--out",
+        (in.scratch / "d").string()}, "", 2, "unknown pseudo-reality 'nope'"},
+      {{"design", "--mission", "aac", "--budget", "2000", "--fsm", "--chocolate", "--pseudo-realities", "sampled-around",
+        "--pseudo-reality-samples", "1-5000", "--out", (in.scratch / "d").string()}, "", 2, "at most 1,000"},
+      {{"mission", "export-argos", "aac", "--out", (in.scratch / "x.argos").string(), "--sample", "2"}, "", 2, "go together"},
+      {{"mission", "export-argos", "aac", "--out", (in.scratch / "x.argos").string(), "--pseudo-reality", "sampled-around",
+        "--sample", "1-3"}, "", 2, "one sample number"},
   };
   return cases;
 }

@@ -55,6 +55,17 @@ const std::vector<std::pair<std::string, std::string>> kProtocols{
      "c"},
 };
 
+// Malformed pseudo-reality specifications (assess --pseudo-reality, design --pseudo-realities).
+const std::vector<std::pair<std::string, std::string>> kPseudoRealities{
+    {"", "line 1"},
+    {"[]", "document: expected an object"},
+    {R"({"knobs": {"wheel_noise": -0.5}})", "knobs.wheel_noise: must not be negative"},
+    {R"({"knobs": {"rab_loss": 1.5}})", "knobs.rab_loss: must be in [0, 1]"},
+    {R"({"knobs": {"rab_loss": {"uniform": [0.2, 1.1]}}})", "knobs.rab_loss.uniform[1]: must be in [0, 1]"},
+    {R"({"knobs": {"teleport_noise": 0.1}})", "knobs.teleport_noise: unknown knob"},
+    {R"({"knobs": {"light_noise": {"around": -1}}})", "knobs.light_noise.around"},
+};
+
 const std::vector<std::pair<std::string, std::string>> kStates{
     {"", "is not an EvoStick state file"},
     {"garbage", "is not an EvoStick state file"},
@@ -100,6 +111,7 @@ void write_bad_files(const Inputs& in) {
   write(in.files / "huge-mission.json", "{\"name\": \"" + std::string(2 << 20, 'x') + "\"}");
   for (std::size_t i = 0; i < kProtocols.size(); ++i) write(numbered(in.files, "protocol", i), kProtocols[i].first);
   for (std::size_t i = 0; i < kStates.size(); ++i) write(numbered(in.files, "state", i), kStates[i].first);
+  for (std::size_t i = 0; i < kPseudoRealities.size(); ++i) write(numbered(in.files, "reality", i), kPseudoRealities[i].first);
   for (std::size_t i = 0; i < kConfigFiles.size(); ++i) write(numbered(in.files, "config", i), kConfigFiles[i].first);
   for (std::size_t i = 0; i < kStartTraces.size(); ++i) write(numbered(in.files, "start", i), kStartTraces[i].first);
   // Arlequin module sets: one weight document missing, one malformed, one of the wrong size.
@@ -144,6 +156,18 @@ std::vector<CliCase> file_cases(const Inputs& in) {
   for (std::size_t i = 0; i < kProtocols.size(); ++i)
     cases.push_back({{"experiment", "--file", numbered(in.files, "protocol", i).string(), "--dry-run"}, "", 2,
                      kProtocols[i].second});
+  for (std::size_t i = 0; i < kPseudoRealities.size(); ++i) {
+    const std::string file = numbered(in.files, "reality", i).string();
+    cases.push_back({evaluate({"assess", "--mission", "aac", "--pseudo-reality", file}), "", 2, kPseudoRealities[i].second});
+    cases.push_back({{"pseudo-realities", file}, "", 2, kPseudoRealities[i].second});
+    cases.push_back({{"design", "--mission", "aac", "--budget", "2000", "--fsm", "--chocolate", "--pseudo-realities", file,
+                      "--out", (in.scratch / "d").string()}, "", 2, kPseudoRealities[i].second});
+  }
+  for (const std::string& file : {std::string("/dev/zero"), (in.files / "absent.json").string()}) {
+    cases.push_back({evaluate({"assess", "--mission", "aac", "--pseudo-reality", file}), "", 2, file});
+    cases.push_back({{"mission", "export-argos", "aac", "--out", (in.scratch / "x.argos").string(), "--pseudo-reality", file,
+                      "--sample", "1"}, "", 2, file});
+  }
   for (std::size_t i = 0; i < kStates.size(); ++i)
     // A state file is stored work, like a design folder: a damaged one is a refusal (1).
     cases.push_back({{"evostick", "--resume", numbered(in.files, "state", i).string()}, "", 1, kStates[i].second});
