@@ -11,10 +11,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/assess_job.hpp"
+#include "app/evaluation_job.hpp"
 #include "control/config_string.hpp"
 #include "evaluation/simulation.hpp"
 #include "missions/catalogue.hpp"
 #include "missions/mission.hpp"
+#include "reality/pseudo_reality.hpp"
 
 namespace {
 
@@ -68,8 +71,12 @@ struct SampledRun {
   std::unique_ptr<sd::Simulation> simulation;
 };
 
-void BM_AacDesignSample(benchmark::State& state) {
+/// The design sample's runs, each in the design model (`spec` null) or in sample
+/// 1 + (run index mod 20) of a pseudo-reality specification.
+void run_design_sample(benchmark::State& state, const sd::PseudoRealitySpec* spec) {
   const sd::Mission mission = sd::load_mission("aac");
+  std::vector<sd::RobotModel> models;
+  for (std::uint64_t k = 1; spec && k <= 20; ++k) models.push_back(spec->sample(mission.robot, k));
   std::vector<SampledRun> runs;
   std::ifstream in(SWARMDESIGN_BENCH_DATA "/aac-design-sample.txt");
   if (!in) throw std::runtime_error("cannot read " SWARMDESIGN_BENCH_DATA "/aac-design-sample.txt");
@@ -85,13 +92,51 @@ void BM_AacDesignSample(benchmark::State& state) {
   }
   for (const auto& [seed, config] : lines)
     runs.push_back({seed, std::make_unique<sd::Simulation>(mission, sd::parse_control_software(config))});
-  std::size_t next = 0;
+  std::size_t next = 0, count = 0;
   for (auto _ : state) {
     SampledRun& run = runs[next];
-    benchmark::DoNotOptimize(run.simulation->run(run.seed));
+    const sd::RobotModel* model = models.empty() ? nullptr : &models[count++ % models.size()];
+    benchmark::DoNotOptimize(run.simulation->run(run.seed, nullptr, model));
     next = (next + 1) % runs.size();
   }
   report_rates(state, mission);
+}
+
+void BM_AacDesignSample(benchmark::State& state) { run_design_sample(state, nullptr); }
+// The same runs in pseudo-realities sampled around the design model (per-robot deviations,
+// position noise on): what a robust design or an assessment pays per run.
+void BM_AacDesignSampleInPseudoRealities(benchmark::State& state) {
+  const auto spec = sd::builtin_pseudo_reality("sampled-around");
+  run_design_sample(state, &*spec);
+}
+
+// Per run, an assessment (design model and 4 pseudo-reality samples, 4 seeds each: 20 runs)
+// against the plain evaluation of 20 seeds, both through the application's jobs on one thread.
+const char* kAssessed = "--fsm-config --nstates 2 --s0 4 --att0 3.5 --n0 1 --n0x0 0 --c0x0 0 --p0x0 0.8 --s1 0 --rwm1 50 --n1 1 --n1x0 0 --c1x0 1 --p1x0 0.5";
+
+void BM_ScoreSeedsPerRun(benchmark::State& state) {
+  const sd::Mission mission = sd::load_mission("aac");
+  const sd::ControlSoftware software = sd::parse_control_software(std::string(kAssessed));
+  std::vector<std::uint64_t> seeds;
+  for (std::uint64_t s = 1; s <= 20; ++s) seeds.push_back(s);
+  sd::app::ScoreOptions one_thread;
+  one_thread.threads = 1;
+  for (auto _ : state) benchmark::DoNotOptimize(sd::app::score_seeds(mission, software, seeds, one_thread));
+  state.counters["ms_per_run"] = benchmark::Counter(20.0 * static_cast<double>(state.iterations()) / 1e3,
+                                                    benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+void BM_AssessPerRun(benchmark::State& state) {
+  const sd::Mission mission = sd::load_mission("aac");
+  sd::app::AssessRequest request;
+  request.software.push_back({"assessed", sd::parse_control_software(std::string(kAssessed))});
+  request.spec = *sd::builtin_pseudo_reality("sampled-around");
+  request.samples = {1, 2, 3, 4};
+  request.seeds = {1, 2, 3, 4};
+  request.threads = 1;
+  for (auto _ : state) benchmark::DoNotOptimize(sd::app::assess(mission, request));
+  state.counters["ms_per_run"] = benchmark::Counter(20.0 * static_cast<double>(state.iterations()) / 1e3,
+                                                    benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 
@@ -149,6 +194,9 @@ void BM_ScalingColourFollowingCameraAllPairs(benchmark::State& state) {
 }
 
 BENCHMARK(BM_AacDesignSample)->Unit(benchmark::kMillisecond)->Iterations(8 * 25);
+BENCHMARK(BM_AacDesignSampleInPseudoRealities)->Unit(benchmark::kMillisecond)->Iterations(8 * 25);
+BENCHMARK(BM_ScoreSeedsPerRun)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_AssessPerRun)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_AacAttractionStop)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_AacExplorationPhototaxis)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_AacColourFollowingCamera)->Unit(benchmark::kMillisecond)->MinTime(2.0);
