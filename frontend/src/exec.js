@@ -145,6 +145,8 @@ export function initExec() {
     const text = $('exec-text').value.trim();
     const mission = $('exec-mission').value;
     const seed = Number($('exec-seed').value);
+    const reality = $('exec-reality').value;
+    const sample = Number($('exec-sample').value);
     if (stream) stream.close();
     stream = null;
     clearRun();
@@ -154,11 +156,14 @@ export function initExec() {
     const started = performance.now();  // Exec pressed: the first frame is timed from here
     window.__sdFirstFrameMs = 0;
     try {
-      answer = await api('/api/runs', { body: { text, mission, seed } });
+      answer = await api('/api/runs', { body: reality ? { text, mission, seed, pseudo_reality: reality, sample } : { text, mission, seed } });
     } catch (e) {
       $('exec-status').textContent = `refused: ${e.message}`;
       return;
     }
+    const p = answer.pseudo_reality;
+    const world = p ? `, in sample ${p.sample} of pseudo-reality ${p.name}` : '';
+    $('exec-status').dataset.world = p ? `${p.spec}#${p.sample}` : '';
     $('exec-status').textContent = `run ${answer.id}: waiting for the scene…`;
     stream = openRun(answer.id, {
       scene(r) {
@@ -168,7 +173,7 @@ export function initExec() {
         timeline.max = String(r.ticks);
         renderModel(graph, r.scene.software, { relayout: true });
         if (!plot) plot = linePlot($('objective-plot'), { xLabel: 'time (s)', yLabel: 'objective', height: 160 });
-        $('exec-status').textContent = `run ${answer.id}: ${r.scene.mission.name}, seed ${r.scene.seed}, ${r.robots} robots`;
+        $('exec-status').textContent = `run ${answer.id}: ${r.scene.mission.name}, seed ${r.scene.seed}, ${r.robots} robots${world}`;
         setPlaying(true);
         dirty = true;
       },
@@ -184,7 +189,7 @@ export function initExec() {
         window.__sdEndMs = performance.now() - started;  // bench/web_viewer.mjs
         $('final-score').textContent = result.scoreText;
         $('final-score').dataset.value = String(result.score);
-        $('exec-status').textContent = `run ${answer.id} complete: ${result.ticks} ticks`;
+        $('exec-status').textContent = `run ${answer.id} complete: ${result.ticks} ticks${world}`;
         updateDownloads();
         dirty = true;
       },
@@ -232,6 +237,11 @@ export function initExec() {
   });
 
   $('exec-run').addEventListener('click', start);
+  // The robot models a run may use: the mission's own, or a sample of a shipped pseudo-reality.
+  $('exec-reality').addEventListener('change', () => { $('exec-sample').disabled = !$('exec-reality').value; });
+  api('/api/pseudo-realities', { quiet: true }).then((list) => {
+    $('exec-reality').append(...list.map((p) => el('option', { value: p.name, text: `pseudo-reality ${p.name}`, title: p.description })));
+  }).catch(() => {});
   $('play').addEventListener('click', () => {
     if (!run) return;
     if (!playing && tick >= run.received - 1 && ended) tick = 0;

@@ -25,6 +25,7 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
   let status = null;
   let testTarget = null;  // {project, text} of the best shown, for "Test on seeds"
   let bestDrawn = null;
+  let realityShown = null;  // "project/design" whose pseudo-reality assessment is shown
   let plot = null;
   let visible = false;
   let fastUntil = 0;
@@ -173,6 +174,7 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
       showConvergence(false);
       $('best-score').textContent = 'no configuration yet';
       for (const id of ['watch-best', 'edit-best', 'test-run', 'argos-best']) $(id).disabled = true;
+      refreshAssessment(null, false);
       testTarget = null;
       $('argos-result').replaceChildren();
       $('design-start').disabled = false;
@@ -226,6 +228,7 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
     const ownDesign = !(opened && opened.experiment);
     $('test-run').disabled = !best || !ownDesign;
     $('argos-best').disabled = !best || !ownDesign;
+    refreshAssessment(design, Boolean(design.best_configuration) && ownDesign && design.state !== 'running');
     for (const id of ['watch-best', 'edit-best']) {
       $(id).disabled = !best;
       $(id).dataset.text = best || '';
@@ -348,6 +351,56 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
     poll();
   });
   initSeedTest(() => testTarget);
+  // The reality gap of the design shown: its last assessment in a pseudo-reality, and a new one.
+  function showAssessment(doc) {
+    const out = $('reality-result');
+    if (!doc) { out.replaceChildren(); return; }
+    const s = doc.software[0];
+    const pct = s.relative_drop === null || s.relative_drop === undefined ? '' : ` (${(100 * s.relative_drop).toFixed(1)} %)`;
+    const p = s.p_value >= 0.001 ? s.p_value.toFixed(3) : s.p_value.toExponential(1);
+    const range = (xs) => (xs.length > 1 ? `${xs[0]}-${xs[xs.length - 1]}` : String(xs[0]));
+    out.replaceChildren(
+      el('div', { testid: 'reality-where', text: `pseudo-reality ${doc.pseudo_reality.name}, samples ${range(doc.samples)}, seeds ${range(doc.seeds)}` }),
+      el('div', {}, 'design model mean ', scoreSpan(el, s.design_mean, { testid: 'reality-design-mean' }),
+        ', pseudo-reality mean ', scoreSpan(el, s.pseudo_reality_mean, { testid: 'reality-mean' })),
+      el('div', { testid: 'reality-drop' }, el('strong', { text: 'drop ' }), scoreSpan(el, s.drop),
+        ` [${readable(s.drop_ci95[0])}, ${readable(s.drop_ci95[1])}]${pct}, Wilcoxon p = ${p}`));
+  }
+  async function refreshAssessment(design, enabled) {
+    $('reality-run').disabled = !enabled;
+    const key = enabled ? `${selected}/${design.id}` : null;
+    if (key === realityShown) return;
+    realityShown = key;
+    showAssessment(null);
+    if (!key) return;
+    try {
+      const doc = await api(`/api/projects/${encodeURIComponent(selected)}/designs/${design.id}/assessment`, { quiet: true });
+      if (realityShown === key) showAssessment(doc);
+    } catch { /* not assessed yet */ }
+  }
+  api('/api/pseudo-realities', { quiet: true }).then((list) => {
+    $('reality-spec').replaceChildren(...list.map((p) => el('option', { value: p.name, text: p.name, title: p.description })));
+    const around = list.find((p) => p.name === 'sampled-around');
+    if (around) $('reality-spec').value = around.name;
+  }).catch(() => {});
+  $('reality-form').addEventListener('submit', async (e) => {
+    e.preventDefault();
+    // The design whose assessment is shown (the status may be reloading meanwhile).
+    const key = realityShown;
+    if (!key) return;
+    const [project, id] = [key.slice(0, key.lastIndexOf('/')), key.slice(key.lastIndexOf('/') + 1)];
+    $('reality-run').disabled = true;
+    $('reality-result').textContent = 'assessing…';
+    try {
+      const doc = await api(`/api/projects/${encodeURIComponent(project)}/designs/${id}/assessment`,
+        { body: { spec: $('reality-spec').value, samples: $('reality-samples').value }, quiet: true });
+      if (realityShown === key) showAssessment(doc);
+    } catch (err) {
+      if (realityShown === key) $('reality-result').textContent = `refused: ${err.message}`;
+    } finally {
+      $('reality-run').disabled = false;
+    }
+  });
   $('compare-form').addEventListener('submit', (e) => { e.preventDefault(); if (comparing.size === 2) compare(); });
   $('project-delete').addEventListener('click', async () => {
     const name = selected;
