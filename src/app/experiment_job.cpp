@@ -75,10 +75,10 @@ bool make_design(storage::Experiments& store, const storage::ExperimentDesign& d
 
 /// The pseudo-reality a planned protocol holds.
 NamedPseudoReality reality_spec(const experiments::PseudoRealityPlan& plan) {
-  if (plan.definition.is_null())
+  if (plan.definition.empty())
     throw InvalidRequest("pseudo_reality.spec: '" + plan.spec + "' was not read when the experiment was planned");
   try {
-    return pseudo_reality_from_document(plan.spec, plan.definition.dump());
+    return pseudo_reality_from_document(plan.spec, plan.definition);
   } catch (const InvalidRequest& e) {
     throw InvalidRequest(std::string("pseudo_reality.definition: ") + e.what());
   }
@@ -135,9 +135,9 @@ PlannedExperiment plan_experiment(const experiments::Protocol& protocol, const F
   PlannedExperiment plan;
   plan.protocol = protocol;
   if (auto& r = plan.protocol.pseudo_reality) {
-    if (r->definition.is_null()) {
+    if (r->definition.empty()) {
       try {
-        r->definition = nlohmann::json::parse(load_requested_pseudo_reality(r->spec, scope).document, nullptr, true, true);
+        r->definition = nlohmann::json::parse(load_requested_pseudo_reality(r->spec, scope).document, nullptr, true, true).dump();
       } catch (const InvalidRequest& e) {
         throw InvalidRequest(std::string("pseudo_reality.spec: ") + e.what());
       } catch (const NotFound& e) {

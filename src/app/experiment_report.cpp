@@ -318,7 +318,7 @@ json pseudo_reality_document(const Analysis& all, const experiments::Protocol& p
                                 {"better_in_design_model", (design_medians[i] > design_medians[j]) == m.maximise ? present[i] : present[j]}});
     }
   }
-  const json& definition = plan.definition;
+  const json definition = plan.definition.empty() ? json(nullptr) : json::parse(plan.definition);
   return {{"spec", plan.spec},
           {"name", definition.is_object() ? definition.value("name", plan.spec) : plan.spec},
           {"description", definition.is_object() ? definition.value("description", "") : ""},

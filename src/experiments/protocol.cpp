@@ -128,7 +128,7 @@ PseudoRealityPlan pseudo_reality_from_json(const nlohmann::json& r) {
   if (r.contains("samples")) plan.samples = static_cast<int>(integer_field(r["samples"], join(path, "samples"), 1, kMaxSamples));
   if (r.contains("definition")) {
     if (!r["definition"].is_object()) fail(join(path, "definition"), "must be an object (a pseudo-reality specification)");
-    plan.definition = r["definition"];
+    plan.definition = r["definition"].dump();
   }
   return plan;
 }
@@ -227,7 +227,7 @@ nlohmann::json to_json(const Protocol& protocol) {
   // of an older version resumes, its stored protocol being compared as text).
   if (const auto& r = protocol.pseudo_reality) {
     nlohmann::json reality{{"spec", r->spec}, {"samples", r->samples}};
-    if (!r->definition.is_null()) reality["definition"] = r->definition;
+    if (!r->definition.empty()) reality["definition"] = nlohmann::json::parse(r->definition);
     document["pseudo_reality"] = std::move(reality);
   }
   return document;
@@ -281,7 +281,7 @@ Protocol with_overrides(Protocol protocol, const ProtocolOverrides& o) {
   if (o.pseudo_reality) {
     if (o.pseudo_reality->empty()) throw ProtocolError("--pseudo-reality: empty name");
     if (!protocol.pseudo_reality || protocol.pseudo_reality->spec != *o.pseudo_reality)
-      protocol.pseudo_reality = PseudoRealityPlan{*o.pseudo_reality, protocol.pseudo_reality ? protocol.pseudo_reality->samples : 20, nullptr};
+      protocol.pseudo_reality = PseudoRealityPlan{*o.pseudo_reality, protocol.pseudo_reality ? protocol.pseudo_reality->samples : 20, ""};
   }
   if (o.pseudo_reality_samples) {
     if (!protocol.pseudo_reality)

@@ -44,8 +44,8 @@ struct PseudoRealityPlan {
   int samples = 20;             // samples 1, 2, ..., samples
   /// The specification itself, filled in when the experiment is planned (the app layer reads
   /// `spec`), so that the experiment resumes with the very robot models it started with; null
-  /// until then. A protocol file may also write it inline.
-  nlohmann::json definition;
+  /// until then. A protocol file may also write it inline. Held as its JSON text (compact).
+  std::string definition;
 };
 
 struct Protocol {

@@ -50,7 +50,7 @@ class ExperimentReality : public ::testing::Test {
     p.designs = 2;
     p.assessment_seeds = 3;
     p.missions = {{mission_, 1, {{"alone", "automode", {"fsm"}, {"chocolate"}}}}};
-    if (reality) p.pseudo_reality = experiments::PseudoRealityPlan{"sampled-around", 2, nullptr};
+    if (reality) p.pseudo_reality = experiments::PseudoRealityPlan{"sampled-around", 2, ""};
     return p;
   }
   void run(const experiments::Protocol& protocol) {
@@ -68,8 +68,9 @@ class ExperimentReality : public ::testing::Test {
 TEST_F(ExperimentReality, ProtocolsPseudoRealityIsReadWhenPlannedAndCountedInTheRuns) {
   const app::PlannedExperiment plan = app::plan_experiment(tiny("gap", true));
   ASSERT_TRUE(plan.protocol.pseudo_reality);
-  EXPECT_TRUE(plan.protocol.pseudo_reality->definition.is_object()) << "the specification is kept with the experiment";
-  EXPECT_EQ(plan.protocol.pseudo_reality->definition.value("name", ""), "sampled-around");
+  const json definition = json::parse(plan.protocol.pseudo_reality->definition);
+  EXPECT_TRUE(definition.is_object()) << "the specification is kept with the experiment";
+  EXPECT_EQ(definition.value("name", ""), "sampled-around");
   EXPECT_EQ(plan.assessment_runs, 2 * 3 * (1 + 2));
   EXPECT_EQ(app::plan_experiment(tiny("plain", false)).assessment_runs, 2 * 3);
   // Without a pseudo-reality the stored protocol is as before (old experiments resume).

@@ -127,7 +127,7 @@ TEST(experiments_Protocol, PseudoRealityIsOptionalAndCheckedFieldByField) {
   ASSERT_TRUE(p.pseudo_reality);
   EXPECT_EQ(p.pseudo_reality->spec, "sampled-around");
   EXPECT_EQ(p.pseudo_reality->samples, 5);
-  EXPECT_TRUE(p.pseudo_reality->definition.is_null());
+  EXPECT_TRUE(p.pseudo_reality->definition.empty());
   EXPECT_EQ(to_json(protocol_from_json(to_json(p))), to_json(p));
   json defaulted = good;
   defaulted["pseudo_reality"].erase("samples");
