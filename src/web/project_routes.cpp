@@ -50,6 +50,13 @@ app::ProjectDesignRequest design_request(const json& body) {
     if (!body.at("fresh").is_boolean()) throw app::InvalidRequest("fresh must be true or false");
     request.fresh = body.at("fresh").get<bool>();
   }
+  // A robust design (run-design --pseudo-realities): a shipped name or a file of the user's projects.
+  if (body.contains("pseudo_realities") && !body.at("pseudo_realities").is_null())
+    request.pseudo_reality = text_field(body, "pseudo_realities");
+  if (body.contains("pseudo_reality_samples") && !body.at("pseudo_reality_samples").is_null()) {
+    if (request.pseudo_reality.empty()) throw app::InvalidRequest("pseudo_reality_samples needs pseudo_realities");
+    request.pseudo_reality_samples = text_field(body, "pseudo_reality_samples");
+  }
   return request;
 }
 

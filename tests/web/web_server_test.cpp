@@ -37,6 +37,7 @@
 #include "export/legacy_string.hpp"
 #include "missions/catalogue.hpp"
 #include "statistics/signed_rank.hpp"
+#include "storage/design_store.hpp"
 #include "storage/designs.hpp"
 #include "storage/lease.hpp"
 #include "storage/projects.hpp"
@@ -1031,6 +1032,39 @@ TEST_F(WebServer, ADesignsBestIsAssessedInAPseudoRealityKeptInItsFolderAndShownT
   expect_field_refused(alice_->post(route, {{"spec", "sampled-around"}, {"seeds", "x"}}), "seeds");
   expect_field_refused(alice_->post(route, {{"spec", "sampled-around"}, {"samples", "1-20"}, {"seeds", "1-1000"}}), "samples");
   EXPECT_EQ(alice_->get(route).body, assessed.body) << "a refused request leaves the last assessment";
+}
+
+TEST_F(WebServer, ARobustDesignIsStartedWithItsPseudoRealitiesAndBadOnesAreRefusedBeforeAnythingIsRecorded) {
+  const auto folder = root_ / "home" / "users" / "alice" / "projects" / "rb";
+  std::filesystem::create_directories(folder);
+  ASSERT_EQ(alice_->post("/api/projects", {{"name", "rb"}, {"mission", write_short_mission(folder, 2).string()}, {"budget", "1100"}}).status, 200);
+  const json space = {{"flavours", "chocolate"}, {"architectures", "fsm"}, {"seed", 4}};
+  auto with = [&](json extra) {
+    json body = space;
+    body.update(extra);
+    return body;
+  };
+  EXPECT_EQ(alice_->post("/api/projects/rb/designs", with({{"pseudo_realities", "no-such-world"}})).status, 400);
+  EXPECT_EQ(alice_->post("/api/projects/rb/designs", with({{"pseudo_realities", "sampled-around"}, {"pseudo_reality_samples", "0-2"}})).status, 400);
+  EXPECT_EQ(alice_->post("/api/projects/rb/designs", with({{"pseudo_reality_samples", "1-2"}})).status, 400);
+  // Another user's file is refused as any missing one, and names nothing of it.
+  const auto bobs = root_ / "home" / "users" / "bob" / "world.json";
+  std::filesystem::create_directories(bobs.parent_path());
+  std::ofstream(bobs) << R"({"knobs": {"wheel_noise": 0.2}})";
+  const Answer outside = alice_->post("/api/projects/rb/designs", with({{"pseudo_realities", bobs.string()}}));
+  EXPECT_GE(outside.status, 400);
+  EXPECT_LT(outside.status, 500);
+  EXPECT_EQ(outside.text.find("wheel_noise"), std::string::npos);
+  EXPECT_TRUE(alice_->get("/api/projects/rb/designs").body.empty()) << "nothing recorded for a refused request";
+
+  const Answer started = alice_->post("/api/projects/rb/designs", with({{"pseudo_realities", "sampled-around"}, {"pseudo_reality_samples", "101-103"}}));
+  ASSERT_EQ(started.status, 200) << started.text;
+  ASSERT_TRUE(wait_until([&] { return alice_->get("/api/projects/rb/status").body.at("design").at("state") == "finished"; },
+                         std::chrono::seconds(120)));
+  const auto db = folder / "designs" / std::to_string(started.body.at("id").get<std::int64_t>());
+  const storage::DesignMeta meta = storage::DesignStore::open(db).meta();
+  EXPECT_EQ(meta.pseudo_reality, "sampled-around");
+  EXPECT_EQ(meta.pseudo_reality_samples, "101-103");
 }
 
 }  // namespace
