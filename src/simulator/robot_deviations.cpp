@@ -11,7 +11,9 @@ constexpr std::uint64_t kDeviationStream = 0x6465766961746521ull;  // "deviate!"
 
 void draw_gains(std::vector<double>& gains, int robots, double deviation, double scale, Rng& rng) {
   gains.resize(static_cast<std::size_t>(robots));
-  for (double& g : gains) g = scale * (deviation > 0.0 ? rng.uniform(1.0 - deviation, 1.0 + deviation) : 1.0);
+  // One draw per robot even at 0 (a gain of exactly 1): the kinds drawn after this one get the
+  // same gains whether or not this one deviates.
+  for (double& g : gains) g = scale * (1.0 - deviation + 2.0 * deviation * rng.uniform());
 }
 
 }  // namespace

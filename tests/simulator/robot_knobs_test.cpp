@@ -406,12 +406,9 @@ TEST(RobotKnobs, DeviationsAreUniformGainsFixedBySeedAndDifferentAcrossRobots) {
   for (const double g : d.light) EXPECT_EQ(g, 1.0);
 }
 
-// DISABLED: reveals that RobotDeviations::draw does not keep the promise of its comment
-// ("always in this order and for every kind, so a robot's wheel gains do not depend on
-// whether its light gain is drawn") for the kinds drawn after a kind at 0: draw_gains only
-// draws when the deviation is positive, so with light_deviation 0 the range-and-bearing
-// gains of the same seed are other ones. Enable once a kind at 0 still consumes its draws.
-TEST(RobotKnobs, DISABLED_AKindsGainsDoNotDependOnWhetherAnotherKindIsDrawn) {
+// A kind at 0 still takes its draws, so the kinds after it get the same gains for a seed
+// whether or not it deviates (found when this test first ran: they did not).
+TEST(RobotKnobs, AKindsGainsDoNotDependOnWhetherAnotherKindIsDrawn) {
   RobotModel model;
   model.wheel_deviation = model.proximity_deviation = model.light_deviation = model.rab_range_deviation = 0.2;
   RobotModel no_light = model;
