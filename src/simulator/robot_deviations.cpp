@@ -13,7 +13,7 @@ void draw_gains(std::vector<double>& gains, int robots, double deviation, double
   gains.resize(static_cast<std::size_t>(robots));
   // One draw per robot even at 0 (a gain of exactly 1): the kinds drawn after this one get the
   // same gains whether or not this one deviates.
-  for (double& g : gains) g = scale * (1.0 - deviation + 2.0 * deviation * rng.uniform());
+  for (double& g : gains) g = scale * rng.uniform(1.0 - deviation, 1.0 + deviation);
 }
 
 }  // namespace
