@@ -1,8 +1,7 @@
 // Performance: one notched box plot per mission, drawn from the precomputed `boxes` so the plot
 // shows exactly the numbers of boxes.csv; each design's score is overlaid as a point.
 import { el, figure, formatScore, section } from './dom.js';
-import { axis, baseLayout, drawPlot, emptyNote, plotTitle } from './plots.js';
-import { directionText } from './report_data.js';
+import { conditionsLayout, drawPlot, translucent } from './plots.js';
 
 const BOX_WIDTH = 0.5;
 const WIDE_AFTER_CONDITIONS = 4; // more conditions than this take the page's whole width
@@ -11,11 +10,6 @@ const WIDE_AFTER_CONDITIONS = 4; // more conditions than this take the page's wh
 function sidewaysOffsets(count) {
   const golden = 0.6180339887;
   return Array.from({ length: count }, (_, k) => ((k * golden) % 1 - 0.5) * BOX_WIDTH * 0.6);
-}
-
-function translucent(hex, alpha) {
-  const n = parseInt(hex.slice(1), 16);
-  return `rgba(${(n >> 16) & 255},${(n >> 8) & 255},${n & 255},${alpha})`;
 }
 
 /// A notch that reaches past its hinges says nothing a reader can use (few designs): Plotly would
@@ -63,16 +57,7 @@ function missionPlot(report, mission, container) {
     traces.push(boxTrace(box, position, report.colourOf(c.name)));
     traces.push(pointsTrace(report, box, position, report.colourOf(c.name)));
   });
-  const layout = baseLayout({
-    title: plotTitle(mission.name),
-    width: container.clientWidth, height: 340,
-    xaxis: axis('', {
-      tickmode: 'array', tickvals: report.conditions.map((_, i) => i), ticktext: ticks,
-      range: [-0.6, report.conditions.length - 0.4], showgrid: false, ticks: '',
-    }),
-    yaxis: axis(`score (${directionText(mission)})`),
-    annotations: traces.length ? [] : emptyNote('no finished design yet'),
-  });
+  const layout = conditionsLayout(report, mission, container, ticks, traces.length ? '' : 'no finished design yet');
   return drawPlot(container, traces, layout);
 }
 

@@ -3,18 +3,12 @@
 // pseudo-realities as paired box plots (each design's two scores joined by a line), then a table
 // of the drop with its paired test and the conditions' ranks in both worlds.
 import { el, figure, formatP, formatScore, section } from './dom.js';
-import { axis, baseLayout, drawPlot, emptyNote, plotTitle } from './plots.js';
-import { directionText } from './report_data.js';
+import { conditionsLayout, drawPlot, translucent } from './plots.js';
 import { conditionCell, reportTable } from './tables.js';
 
 const ALPHA = 0.05;
 const OFFSET = 0.2;
 const BOX_WIDTH = 0.32;
-
-function translucent(hex, alpha) {
-  const n = parseInt(hex.slice(1), 16);
-  return `rgba(${(n >> 16) & 255},${(n >> 8) & 255},${n & 255},${alpha})`;
-}
 
 function box(b, position, colour, fill, name) {
   return {
@@ -46,16 +40,8 @@ function missionPlot(report, gap, mission, container) {
   });
   const ticks = report.conditions.map((c, i) => (cells[i]
     ? `${c.name}<br><span style="font-size:10px;color:#666">design model | pseudo-reality</span>` : c.name));
-  const layout = baseLayout({
-    title: plotTitle(mission.name),
-    width: container.clientWidth, height: 340,
-    xaxis: axis('', {
-      tickmode: 'array', tickvals: report.conditions.map((_, i) => i), ticktext: ticks,
-      range: [-0.6, report.conditions.length - 0.4], showgrid: false, ticks: '',
-    }),
-    yaxis: axis(`score (${directionText(mission)})`),
-    annotations: traces.length ? [] : emptyNote('no design assessed in the pseudo-realities yet'),
-  });
+  const layout = conditionsLayout(report, mission, container, ticks,
+    traces.length ? '' : 'no design assessed in the pseudo-realities yet');
   return drawPlot(container, traces, layout);
 }
 
