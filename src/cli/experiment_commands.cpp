@@ -228,7 +228,7 @@ void print_headline(const nlohmann::json& doc) {
       std::cout << "    " << c["mission"].get<std::string>() << " / " << c["condition"].get<std::string>() << ": median "
                 << format_number(c["pseudo_reality"]["median"].get<double>()) << " (design model "
                 << format_number(c["design_model"]["median"].get<double>()) << "), median drop "
-                << format_number(c["median_drop"].get<double>()) << ", paired Wilcoxon p = "
+                << format_number(std::round(c["median_drop"].get<double>() * 1e4) / 1e4) << ", paired Wilcoxon p = "
                 << (c["wilcoxon"].is_null() ? std::string("n/a") : format_number(c["wilcoxon"]["p_value"].get<double>())) << "\n";
     for (const auto& i : r["inversions"])
       std::cout << "    " << i["mission"].get<std::string>() << ": " << i["a"].get<std::string>() << " and "

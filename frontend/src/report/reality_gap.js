@@ -53,12 +53,12 @@ function gapTable(report, gap) {
     { title: 'mission', value: (c) => c.mission },
     { title: 'condition', value: (c) => conditionCell(report, c.condition) },
     { title: 'designs', numeric: true, value: (c) => c.n },
-    { title: 'median, design', numeric: true, value: (c) => formatScore(c.design_model.median) },
-    { title: 'median, pseudo', numeric: true, value: (c) => formatScore(c.pseudo_reality.median) },
-    { title: 'median drop', numeric: true, value: (c) => formatScore(c.median_drop) },
-    { title: 'designs that drop', numeric: true, value: (c) => `${c.designs_dropping} of ${c.n}` },
-    { title: 'paired p', numeric: true, value: (c) => (p(c) != null && p(c) < ALPHA ? el('strong', {}, `${formatP(p(c))} *`) : formatP(p(c))) },
-    { title: 'rank: design → pseudo', numeric: true, value: (c) => {
+    { title: 'design model', numeric: true, value: (c) => formatScore(c.design_model.median) },
+    { title: 'pseudo', numeric: true, value: (c) => formatScore(c.pseudo_reality.median) },
+    { title: 'drop', numeric: true, value: (c) => formatScore(c.median_drop) },
+    { title: 'dropping', numeric: true, value: (c) => `${c.designs_dropping} of ${c.n}` },
+    { title: 'p', numeric: true, value: (c) => (p(c) != null && p(c) < ALPHA ? el('strong', {}, `${formatP(p(c))} *`) : formatP(p(c))) },
+    { title: 'rank', numeric: true, value: (c) => {
       const r = rank(c);
       const changed = r.design_model_rank !== r.pseudo_reality_rank;
       const text = `${rankText(r.design_model_rank)} → ${rankText(r.pseudo_reality_rank)}`;
@@ -66,10 +66,12 @@ function gapTable(report, gap) {
     } },
   ], gap.cells, {
     testid: 'reality-gap',
-    caption: 'Drop: score lost from the design model to the pseudo-realities, per design (positive is worse). '
-      + `A design drops when its paired Wilcoxon test over the seeds gives p < ${ALPHA}; the paired p compares the `
-      + `designs' scores in both worlds (Wilcoxon signed-rank, two-sided; * marks p < ${ALPHA}). Ranks: conditions `
-      + 'by median on the mission, 1 = best.',
+    caption: 'Medians over the designs in the design model and in the pseudo-realities. Drop: the median score lost '
+      + 'from the design model to the pseudo-realities, per design (positive is worse); dropping: designs whose own '
+      + 'drop is significant. '
+      + `A design drops when its paired Wilcoxon test over the seeds gives p < ${ALPHA}; p compares the `
+      + `designs' scores in both worlds (Wilcoxon signed-rank, two-sided; * marks p < ${ALPHA}). Rank: the condition's rank `
+      + 'by median on the mission in the design model → in the pseudo-realities, 1 = best.',
   });
 }
 
