@@ -3,29 +3,35 @@
 // `pseudo-realities` lists the shipped specifications and shows samples of any of them.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <memory>
 
+#include "app/accounts.hpp"
 #include "app/assess_job.hpp"
 #include "app/documents.hpp"
 #include "app/inputs.hpp"
+#include "app/projects.hpp"
 #include "app/pseudo_realities.hpp"
+#include "app/saved_software.hpp"
 #include "cli/command_registry.hpp"
 #include "cli/control_software_input.hpp"
 #include "cli/progress_line.hpp"
 #include "control/config_string.hpp"
 #include "storage/design_status.hpp"
 #include "storage/design_store.hpp"
+#include "storage/designs.hpp"
 
 namespace sd::cli {
 namespace {
 
 struct AssessOptions {
   std::string mission, pseudo_reality = "sampled-around", samples = "1-20", seeds = "1-10", csv;
-  std::vector<std::string> software, designs;
+  std::vector<std::string> software, designs, saved;
+  std::vector<std::int64_t> project_designs;
   bool elites = false, json = false;
   int threads = 0;
   ControlSoftwareOptions inline_software;
@@ -39,18 +45,39 @@ std::vector<app::SoftwareToAssess> gather_software(const Context& context, const
     out.push_back({"software", read_control_software(context, o.inline_software)});
   for (std::size_t i = 0; i < o.software.size(); ++i)
     out.push_back({"software " + std::to_string(i + 1), parse_control_software(o.software[i])});
-  for (const std::string& folder : o.designs) {
+  std::vector<std::pair<std::string, std::string>> folders;  // label, folder
+  for (const std::string& folder : o.designs) folders.emplace_back(folder, folder);
+  if (!o.saved.empty() || !o.project_designs.empty()) {  // the active project's
+    app::Home home;
+    const storage::User user = app::signed_in_user(home);
+    const storage::Project project = app::active_project(home, user);
+    if (mission.empty() && project.mission) mission = *project.mission;
+    const std::vector<app::SavedSoftware> saved = app::list_saved_software(home, user, project.name);
+    for (const std::string& name : o.saved) {
+      const auto it = std::find_if(saved.begin(), saved.end(), [&](const app::SavedSoftware& s) { return s.name == name; });
+      if (it == saved.end()) throw app::NotFound("--saved: project " + project.name + " has no saved software '" + name + "'");
+      out.push_back({"saved " + name, parse_control_software(it->text)});
+    }
+    storage::Designs designs(home.workspace(), project);
+    for (const std::int64_t id : o.project_designs) {
+      const storage::Design d = designs.get(id);
+      folders.emplace_back("design " + std::to_string(id), d.folder.string());
+    }
+  }
+  for (const auto& [label, folder] : folders) {
     const storage::DesignProgress progress = storage::read_design_progress(folder);
-    if (!progress.best) throw UsageError("--design " + folder + ": the design has no result yet");
+    if (!progress.best) throw UsageError(label + ": the design has no result yet");
     if (mission.empty()) mission = storage::DesignStore::open(folder, true).meta().mission;
     if (!o.elites) {
-      out.push_back({folder + " best", parse_control_software(progress.best->command_line)});
+      out.push_back({label + " best", parse_control_software(progress.best->command_line)});
       continue;
     }
     for (const storage::ConfigurationScore& elite : progress.elites)
-      out.push_back({folder + " elite " + std::to_string(elite.id), parse_control_software(elite.command_line)});
+      out.push_back({label + " elite " + std::to_string(elite.id), parse_control_software(elite.command_line)});
   }
-  if (out.empty()) throw UsageError("nothing to assess: give --design DIR, --software TEXT or end the command with --fsm-config ...");
+  if (out.empty())
+    throw UsageError("nothing to assess: give --design DIR, --project-design ID, --saved NAME, --software TEXT or end the "
+                     "command with --fsm-config ...");
   return out;
 }
 
@@ -95,7 +122,9 @@ void write_csv(const app::Assessment& a, const std::string& path) {
 void register_assess(CLI::App& app, Context& context) {
   auto* cmd = app.add_subcommand("assess", "Assess control software across the reality gap: design model against pseudo-realities");
   auto o = std::make_shared<AssessOptions>();
-  cmd->add_option("--mission", o->mission, "Mission name or mission file (default: the first --design's)");
+  cmd->add_option("--mission", o->mission,
+                  "Mission name or mission file (default: the active project's with --project-design or --saved, else the "
+                  "first --design's)");
   cmd->add_option("--pseudo-reality", o->pseudo_reality,
                   "Pseudo-reality specification: a shipped name (see `swarmdesign pseudo-realities`) or a .json file "
                   "(default sampled-around)");
@@ -103,7 +132,9 @@ void register_assess(CLI::App& app, Context& context) {
   cmd->add_option("--seeds", o->seeds, "Seeds A-B, the same in every world (default 1-10)");
   cmd->add_option("--software", o->software, "Control software as a configuration string (repeatable)");
   cmd->add_option("--design", o->designs, "A design folder: its best control software (repeatable)");
-  cmd->add_flag("--elites", o->elites, "With --design: every final elite instead of the best");
+  cmd->add_option("--project-design", o->project_designs, "A design of the active project, by id: its best (repeatable)");
+  cmd->add_option("--saved", o->saved, "Control software saved in the active project, by name (repeatable)");
+  cmd->add_flag("--elites", o->elites, "With --design or --project-design: every final elite instead of the best");
   cmd->add_option("--threads", o->threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
   cmd->add_option("--csv", o->csv, "Write every score (software, world, sample, seed, score) to FILE");
   cmd->add_flag("--json", o->json, "Print one JSON document");

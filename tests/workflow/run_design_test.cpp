@@ -222,5 +222,23 @@ TEST_F(run_design, RefusedRequestsChangeNothing) {
   EXPECT_EQ(query("SELECT count(*) FROM designs"), "0");
 }
 
+TEST_F(run_design, ARobustDesignIsAssessedByIdOnSamplesItNeverSaw) {
+  project_with_budget(1100);
+  const std::string out = run_ok({"run-design", "--fsm", "--chocolate", "--seed", "3", "--threads", "2",
+                                  "--pseudo-realities", "sampled-around", "--pseudo-reality-samples", "101-103"});
+  EXPECT_NE(out.find("A robust design"), std::string::npos) << out;
+  // The same command again finds it finished; with other samples it is another design.
+  EXPECT_NE(run_ok({"run-design", "--fsm", "--chocolate", "--seed", "3", "--pseudo-realities", "sampled-around",
+                    "--pseudo-reality-samples", "101-103"}).find("already finished"), std::string::npos);
+  const json by_id = json::parse(run_ok({"assess", "--project-design", "1", "--samples", "1-2", "--seeds", "1-3", "--json"}));
+  const json by_folder =
+      json::parse(run_ok({"assess", "--design", design_folder(1).string(), "--samples", "1-2", "--seeds", "1-3", "--json"}));
+  ASSERT_EQ(by_id["software"].size(), 1u);
+  EXPECT_EQ(by_id["software"][0]["label"], "design 1 best");
+  EXPECT_EQ(by_id["software"][0]["runs"], by_folder["software"][0]["runs"]);
+  EXPECT_EQ(by_id["software"][0]["control_software"], status()["design"]["best_configuration"]);
+  EXPECT_EQ(by_id["samples"], json::array({1, 2}));
+}
+
 }  // namespace
 }  // namespace sd::test
