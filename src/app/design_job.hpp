@@ -43,9 +43,9 @@ struct NewDesignSettings {
   /// (shipped name or file) whose samples are the race's instances, each drawn with its own
   /// seeds, so the race keeps control software that holds across robot models. Empty: the
   /// design model alone.
-  std::string pseudo_reality;
+  std::string pseudo_reality{};
   std::string pseudo_reality_samples = std::string(kDefaultDesignSamples);
-  std::string pseudo_reality_document;  // its text when already read (a design resumed); else loaded
+  std::string pseudo_reality_document{};  // its text when already read (a design resumed); else loaded
 };
 
 struct PreparedDesign {
@@ -89,7 +89,7 @@ struct DesignReport {
   std::uint64_t seed = 0;
   std::string architectures, flavours;
   std::vector<std::string> notes;
-  std::string pseudo_reality, pseudo_reality_samples;  // a robust design's; empty otherwise
+  std::string pseudo_reality{}, pseudo_reality_samples{};  // a robust design's; empty otherwise
   bool resumed = false;
   long long experiments_used = 0;
   int iterations = 0;

@@ -35,8 +35,8 @@ struct MissionExportRequest {
   argos::ExperimentOptions options;
   /// A pseudo-reality sample to write instead of the design model (the same sample runs in
   /// ARGoS as here): a specification's shipped name or file, and the sample number (>= 1).
-  std::string pseudo_reality;
-  std::string sample;
+  std::string pseudo_reality{};
+  std::string sample{};
 };
 /// Writes the file; returns what was written (its notes are for the user).
 argos::Experiment export_mission(const MissionExportRequest& request);

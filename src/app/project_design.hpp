@@ -31,7 +31,7 @@ struct ProjectDesignRequest {
   std::string owner;                  // storage::Owner::text() of the job that will run it
   std::optional<std::string> project; // a project by name (a server); nullopt: the active one
   FileScope files = FileScope::local(); // where its mission file may be (a server: the user's projects)
-  std::string pseudo_reality;           // a robust design's specification (NewDesignSettings)
+  std::string pseudo_reality{};         // a robust design's specification (NewDesignSettings)
   std::string pseudo_reality_samples = std::string(kDefaultDesignSamples);
 };
 

@@ -25,7 +25,7 @@ struct WireTask {
   std::int64_t key = -1;  // EvaluationTask::key
   std::uint64_t seed = 0;
   std::string software;   // configuration string
-  std::optional<RobotModel> robot;  // EvaluationTask::robot (a pseudo-reality), by value
+  std::optional<RobotModel> robot{};  // EvaluationTask::robot (a pseudo-reality), by value
 };
 
 struct WorkChunk {

@@ -52,7 +52,7 @@ struct DesignMeta {
   /// A robust design's pseudo-realities (Ligot & Birattari 2020): the specification as the user
   /// named it, its whole text (so it resumes alike if the file changes) and the samples its
   /// instances are, "A-B". Empty for a design in the design model alone.
-  std::string pseudo_reality, pseudo_reality_document, pseudo_reality_samples;
+  std::string pseudo_reality{}, pseudo_reality_document{}, pseudo_reality_samples{};
 };
 
 /// One checkpoint's new rows, written in one transaction.
