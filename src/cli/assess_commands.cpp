@@ -3,27 +3,21 @@
 // `pseudo-realities` lists the shipped specifications and shows samples of any of them.
 #include <CLI/CLI.hpp>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <memory>
 
-#include "app/accounts.hpp"
 #include "app/assess_job.hpp"
+#include "app/assess_sources.hpp"
 #include "app/documents.hpp"
 #include "app/inputs.hpp"
-#include "app/projects.hpp"
 #include "app/pseudo_realities.hpp"
-#include "app/saved_software.hpp"
 #include "cli/command_registry.hpp"
 #include "cli/control_software_input.hpp"
 #include "cli/progress_line.hpp"
 #include "control/config_string.hpp"
-#include "storage/design_status.hpp"
-#include "storage/design_store.hpp"
-#include "storage/designs.hpp"
 
 namespace sd::cli {
 namespace {
@@ -37,44 +31,14 @@ struct AssessOptions {
   ControlSoftwareOptions inline_software;
 };
 
-/// Every piece of software the command names, labelled, and the mission of the first design
-/// (when --mission is not given).
+/// Every piece of software the command names, labelled; the mission as app::add_software_to_assess sets it.
 std::vector<app::SoftwareToAssess> gather_software(const Context& context, const AssessOptions& o, std::string& mission) {
   std::vector<app::SoftwareToAssess> out;
   if (context.has_control_software() || !o.inline_software.config_file.empty())
     out.push_back({"software", read_control_software(context, o.inline_software)});
   for (std::size_t i = 0; i < o.software.size(); ++i)
     out.push_back({"software " + std::to_string(i + 1), parse_control_software(o.software[i])});
-  std::vector<std::pair<std::string, std::string>> folders;  // label, folder
-  for (const std::string& folder : o.designs) folders.emplace_back(folder, folder);
-  if (!o.saved.empty() || !o.project_designs.empty()) {  // the active project's
-    app::Home home;
-    const storage::User user = app::signed_in_user(home);
-    const storage::Project project = app::active_project(home, user);
-    if (mission.empty() && project.mission) mission = *project.mission;
-    const std::vector<app::SavedSoftware> saved = app::list_saved_software(home, user, project.name);
-    for (const std::string& name : o.saved) {
-      const auto it = std::find_if(saved.begin(), saved.end(), [&](const app::SavedSoftware& s) { return s.name == name; });
-      if (it == saved.end()) throw app::NotFound("--saved: project " + project.name + " has no saved software '" + name + "'");
-      out.push_back({"saved " + name, parse_control_software(it->text)});
-    }
-    storage::Designs designs(home.workspace(), project);
-    for (const std::int64_t id : o.project_designs) {
-      const storage::Design d = designs.get(id);
-      folders.emplace_back("design " + std::to_string(id), d.folder.string());
-    }
-  }
-  for (const auto& [label, folder] : folders) {
-    const storage::DesignProgress progress = storage::read_design_progress(folder);
-    if (!progress.best) throw UsageError(label + ": the design has no result yet");
-    if (mission.empty()) mission = storage::DesignStore::open(folder, true).meta().mission;
-    if (!o.elites) {
-      out.push_back({label + " best", parse_control_software(progress.best->command_line)});
-      continue;
-    }
-    for (const storage::ConfigurationScore& elite : progress.elites)
-      out.push_back({label + " elite " + std::to_string(elite.id), parse_control_software(elite.command_line)});
-  }
+  app::add_software_to_assess({o.designs, o.project_designs, o.saved, o.elites}, out, mission);
   if (out.empty())
     throw UsageError("nothing to assess: give --design DIR, --project-design ID, --saved NAME, --software TEXT or end the "
                      "command with --fsm-config ...");
