@@ -6,7 +6,10 @@
 # EvoStick's training arenas (src/evostick).
 file(GLOB json_files ${DIR}/*.json)
 list(SORT json_files)
-set(body "// Generated from ${DIR}/*.json by embed_json_files.cmake; do not edit.\n#include \"${HEADER}\"\n\nnamespace ${NAMESPACE} {\nnamespace {\n")
+# The comment names the folder as the repository does, not by its absolute path: the file is
+# then the same in every clone, and ccache reuses its object.
+get_filename_component(dir_name ${DIR} NAME)
+set(body "// Generated from ${dir_name}/*.json by embed_json_files.cmake; do not edit.\n#include \"${HEADER}\"\n\nnamespace ${NAMESPACE} {\nnamespace {\n")
 set(table "")
 set(index 0)
 foreach(file ${json_files})

@@ -8,6 +8,7 @@
 #include <string>
 #include <sys/wait.h>
 #include <unistd.h>
+#include "test_paths.hpp"
 
 namespace sd::test {
 
@@ -19,7 +20,7 @@ struct CliResult {
 /// Runs `swarmdesign ARGS` (ARGS as a shell would split them).
 inline CliResult run_cli(const std::string& args) {
   const auto err_file = std::filesystem::temp_directory_path() / ("sd_cli_err_" + std::to_string(::getpid()));
-  const std::string command = std::string(SWARMDESIGN_BINARY) + " " + args + " 2>" + err_file.string();
+  const std::string command = std::string(::sd::test::swarmdesign_binary()) + " " + args + " 2>" + err_file.string();
   FILE* pipe = ::popen(command.c_str(), "r");
   CliResult r;
   char buffer[4096];

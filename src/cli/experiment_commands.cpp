@@ -22,6 +22,7 @@
 #include "control/config_string.hpp"
 #include "design/design_space.hpp"
 #include "cli/slurm_flags.hpp"
+#include "cli/web_root.hpp"
 #include "storage/lease.hpp"
 
 namespace sd::cli {
@@ -208,7 +209,7 @@ void run_experiment_command(const ExperimentOptions& o) {
 
 struct ReportOptions {
   std::string experiment, out, project;
-  std::string web_root = SWARMDESIGN_WEB_ROOT;
+  std::string web_root = default_web_root();
   bool json = false;
 };
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cli/command_registry.hpp"
+#include "cli/web_root.hpp"
 #include "core/home.hpp"
 #include "web/web_server.hpp"
 
@@ -20,7 +21,7 @@ namespace {
 struct WebOptions {
   std::string host = "127.0.0.1";
   int port = 8080;
-  std::string web_root = SWARMDESIGN_WEB_ROOT;
+  std::string web_root = default_web_root();
   std::vector<std::string> allowed_hosts;
   bool behind_tls = false;
 };

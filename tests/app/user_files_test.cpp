@@ -15,6 +15,7 @@
 #include "app/user_files.hpp"
 #include "modules/arlequin_module_set.hpp"
 #include "storage/workspace.hpp"
+#include "test_paths.hpp"
 
 namespace sd::app {
 namespace {
@@ -36,14 +37,14 @@ class ModuleSetScope : public ::testing::Test {
   static void copy_set(const fs::path& to) {
     fs::create_directories(to);
     for (const char* name : {"exploration", "stop", "phototaxis", "antiphototaxis", "attraction", "repulsion"})
-      fs::copy_file(fs::path(SWARMDESIGN_SOURCE_DIR) / "data/arlequin-demiurge" / (std::string(name) + ".json"),
+      fs::copy_file(fs::path(::sd::test::source_dir()) / "data/arlequin-demiurge" / (std::string(name) + ".json"),
                     to / (std::string(name) + ".json"));
   }
   // A mission file in Alice's project that names `set` as its module set.
   fs::path mission_naming(const std::string& set) const {
     const fs::path file = alice_projects_ / "p" / "mission.json";
     nlohmann::json document = nlohmann::json::parse(
-        std::ifstream(fs::path(SWARMDESIGN_SOURCE_DIR) / "missions" / "aac.json"), nullptr, true, /*ignore_comments=*/true);
+        std::ifstream(fs::path(::sd::test::source_dir()) / "missions" / "aac.json"), nullptr, true, /*ignore_comments=*/true);
     document["arlequin_modules"] = set;
     std::ofstream(file) << document.dump(1);
     return file;

@@ -13,6 +13,7 @@
 #include "control/config_string.hpp"
 #include "control_test_helpers.hpp"
 #include "core/rng.hpp"
+#include "test_paths.hpp"
 
 namespace sd {
 namespace {
@@ -243,7 +244,7 @@ std::vector<std::string> split_csv_line(const std::string& line) {
 TEST(ControlGrammarCalibration, EveryRowOfTheSharedCalibrationFileParses) {
   // The repository's copy of the ARGoS calibration table: it is always there, so a missing
   // file is a failure, never a skip.
-  const std::string path = std::string(SWARMDESIGN_SOURCE_DIR) + "/tests/data/argos-reference.csv";
+  const std::string path = std::string(::sd::test::source_dir()) + "/tests/data/argos-reference.csv";
   std::ifstream in(path);
   ASSERT_TRUE(in) << "cannot read " << path;
   std::string line;

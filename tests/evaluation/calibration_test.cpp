@@ -40,6 +40,7 @@
 #include "statistics/descriptive.hpp"
 #include "statistics/sign_test.hpp"
 #include "statistics/welch.hpp"
+#include "test_paths.hpp"
 
 namespace sd {
 
@@ -52,7 +53,7 @@ namespace {
 using statistics::mean;
 using statistics::sample_standard_deviation;
 
-const std::string kData = std::string(SWARMDESIGN_SOURCE_DIR) + "/tests/data";
+const std::string kData = std::string(::sd::test::source_dir()) + "/tests/data";
 
 /// Noise seeds per ARGoS start. ARGoS ran each start once; here each start's score is the mean
 /// of this many runs from it, so that our side's noise (some controllers have heavy tails: F2

@@ -9,6 +9,7 @@
 #include <sys/wait.h>
 
 #include "run_cli.hpp"
+#include "test_paths.hpp"
 
 namespace {
 
@@ -50,7 +51,7 @@ TEST(Cli, ArlequinModulesPicksTheSetAndABadOneIsOneLine) {
   const Result named = run("evaluate --mission aac --arlequin-modules swarmdesign" + attraction);
   const Result demiurge = run("evaluate --mission aac --arlequin-modules demiurge" + attraction);
   const Result folder =
-      run("evaluate --mission aac --arlequin-modules " + std::string(SWARMDESIGN_SOURCE_DIR) + "/data/arlequin-demiurge" + attraction);
+      run("evaluate --mission aac --arlequin-modules " + std::string(::sd::test::source_dir()) + "/data/arlequin-demiurge" + attraction);
   ASSERT_EQ(demiurge.status, 0) << demiurge.err;
   EXPECT_EQ(named.out, shipped.out);
   EXPECT_NE(demiurge.out, shipped.out);

@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "workflow/swarmdesign_process.hpp"
+#include "test_paths.hpp"
 
 namespace sd {
 namespace {
@@ -186,7 +187,7 @@ TEST(EvoStickCli, AnEvolutionWhoseMissionFileWasEditedIsNotResumed) {
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   std::stringstream aac;
-  aac << std::ifstream(std::string(SWARMDESIGN_SOURCE_DIR) + "/missions/aac.json").rdbuf();
+  aac << std::ifstream(std::string(::sd::test::source_dir()) + "/missions/aac.json").rdbuf();
   const auto mission = dir / "mine.json";
   std::ofstream(mission) << aac.str();
   const std::string state = (dir / "mine.evostick").string();

@@ -17,12 +17,13 @@
 #include "evostick/module_training.hpp"
 #include "evostick/weight_document.hpp"
 #include "workflow/swarmdesign_process.hpp"
+#include "test_paths.hpp"
 
 namespace sd {
 namespace {
 
 std::string shipped_text(std::string_view name) {
-  std::ifstream in(std::string(SWARMDESIGN_SOURCE_DIR) + "/data/arlequin/" + std::string(name) + ".json");
+  std::ifstream in(std::string(::sd::test::source_dir()) + "/data/arlequin/" + std::string(name) + ".json");
   std::stringstream text;
   text << in.rdbuf();
   return text.str();

@@ -14,6 +14,7 @@
 #include "design/design_space.hpp"
 #include "design/sampling.hpp"
 #include "export/legacy_string.hpp"
+#include "test_paths.hpp"
 
 namespace sd {
 namespace {
@@ -233,7 +234,7 @@ TEST(export_LegacyString, EvoStickNetworksAreNotModularControlSoftware) {
 TEST(export_LegacyString, CalibrationControllersExportAsTheStringsArgosRan) {
   int checked = 0;
   for (const char* file : {"argos-reference-2.csv", "argos-reference-3.csv"}) {
-    std::ifstream in(std::string(SWARMDESIGN_SOURCE_DIR) + "/tests/data/" + file);
+    std::ifstream in(std::string(::sd::test::source_dir()) + "/tests/data/" + file);
     ASSERT_TRUE(in) << file;
     std::string line;
     std::getline(in, line);

@@ -14,6 +14,7 @@
 #include "modules/arlequin_demiurge.hpp"
 #include "modules/arlequin_module_set.hpp"
 #include "robot/reference_model_test_helpers.hpp"
+#include "test_paths.hpp"
 
 namespace sd {
 namespace {
@@ -22,7 +23,7 @@ using arlequin::Inputs;
 using arlequin::Machinery;
 using arlequin::ModuleSet;
 
-const std::string kDataDir = std::string(SWARMDESIGN_SOURCE_DIR) + "/data/arlequin-demiurge";
+const std::string kDataDir = std::string(::sd::test::source_dir()) + "/data/arlequin-demiurge";
 
 // ---- sets ------------------------------------------------------------------------------
 

@@ -17,6 +17,7 @@
 #include "simulator/robot_model.hpp"
 #include "simulator/sensors.hpp"
 #include "swarm_builder.hpp"
+#include "test_paths.hpp"
 
 namespace sd {
 namespace {
@@ -97,7 +98,7 @@ struct TraceRow {
 /// tests/data/traces/sca_explore_seed2_epuck4.csv: the rows of epuck4 in the ARGoS trace
 /// sca_explore_seed2 (calibration traces), ticks 0-260.
 std::vector<TraceRow> epuck4_trace() {
-  std::ifstream in(std::string(SWARMDESIGN_SOURCE_DIR) + "/tests/data/traces/sca_explore_seed2_epuck4.csv");
+  std::ifstream in(std::string(::sd::test::source_dir()) + "/tests/data/traces/sca_explore_seed2_epuck4.csv");
   std::vector<TraceRow> rows;
   std::string line;
   std::getline(in, line);

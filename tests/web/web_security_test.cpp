@@ -22,6 +22,7 @@
 #include "web/host_check.hpp"
 #include "web/web_client.hpp"
 #include "workflow/design_helpers.hpp"
+#include "test_paths.hpp"
 
 namespace sd::test {
 namespace {
@@ -122,7 +123,7 @@ TEST_F(WebSecurity, AFileOutsideOnesProjectsIsRefusedAlikeWhetherItExistsOrNot) 
   // A readable file of the server's disk, as JSON and as text, each holding a secret.
   const auto outside = root_ / "outside";
   std::filesystem::create_directories(outside);
-  std::ofstream(outside / "valid.json") << std::ifstream(std::filesystem::path(SWARMDESIGN_SOURCE_DIR) / "missions" / "aac.json").rdbuf();
+  std::ofstream(outside / "valid.json") << std::ifstream(std::filesystem::path(::sd::test::source_dir()) / "missions" / "aac.json").rdbuf();
   std::ofstream(outside / "secret.json") << "{\"name\": \"" << kSecret << "\", oops";
   for (const auto& path : {(outside / "valid.json").string(), (outside / "secret.json").string(), std::string("/etc/passwd"),
                            std::string("/etc/hostname"), std::string("/proc/self/environ"), (outside / "missing.json").string(),
@@ -403,7 +404,7 @@ TEST_F(WebSecurity, OneUsersRunsDoNotTakeEveryoneElsesExec) {
   project_with_own_mission(*alice_, "alice", "mine");
   // A swarm large enough that four of its runs are still simulating when the fifth is asked for.
   const auto folder = projects_of("alice") / "mine";
-  std::ifstream in(std::filesystem::path(SWARMDESIGN_SOURCE_DIR) / "missions" / "aggregation.json");
+  std::ifstream in(std::filesystem::path(::sd::test::source_dir()) / "missions" / "aggregation.json");
   std::string text((std::istreambuf_iterator<char>(in)), {});
   text = std::regex_replace(text, std::regex("\"robots\": 20"), "\"robots\": 1000");
   // 1000 robots for 999 ticks and the placement: exactly the 1,000,000 robot-frames Exec keeps.

@@ -43,6 +43,7 @@
 #include "storage/projects.hpp"
 #include "web/web_client.hpp"
 #include "workflow/design_helpers.hpp"
+#include "test_paths.hpp"
 
 namespace sd::test {
 namespace {
@@ -357,7 +358,7 @@ TEST_F(WebServer, AnExperimentsReportIsServedToItsOwnerOnlyAsOneSelfContainedPag
   EXPECT_EQ(alice_->get("/api/projects/mine/status").body.at("experiments"), list.body);
 
   // The page needs the front end's report bundle: a server with the built web root.
-  RunningServer with_pages(root_ / "home", std::filesystem::path(SWARMDESIGN_BINARY).parent_path() / "web-root");
+  RunningServer with_pages(root_ / "home", std::filesystem::path(::sd::test::swarmdesign_binary()).parent_path() / "web-root");
   WebClient alice(with_pages.port()), bob(with_pages.port());
   ASSERT_TRUE(alice.sign_in("alice", "alice-password"));
   ASSERT_TRUE(bob.sign_in("bob", "bob-password"));
@@ -378,7 +379,7 @@ TEST_F(WebServer, AnExperimentsReportIsServedToItsOwnerOnlyAsOneSelfContainedPag
     app::Home home(root_ / "home");
     const storage::User owner = app::sign_in_here(home, "alice", "alice-password").user;
     written = app::write_experiment_report(app::experiment_report_document(home, owner, "tiny", "mine"), root_ / "report",
-                                           std::filesystem::path(SWARMDESIGN_BINARY).parent_path() / "web-root");
+                                           std::filesystem::path(::sd::test::swarmdesign_binary()).parent_path() / "web-root");
   }
   int served = 0;
   for (const auto& file : written) {
@@ -917,7 +918,7 @@ TEST_F(WebServer, TheServerBindsTheLoopbackAddressByDefault) {
   EXPECT_EQ(web::WebServerOptions{}.host, "127.0.0.1");
   // The command's own default, as a user starts it.
   const std::string out = [&] {
-    const std::string command = "SWARMDESIGN_HOME='" + (root_ / "home").string() + "' timeout 3 " + SWARMDESIGN_BINARY +
+    const std::string command = "SWARMDESIGN_HOME='" + (root_ / "home").string() + "' timeout 3 " + ::sd::test::swarmdesign_binary() +
                                 " run-exp --port 0 --web-root '" + root_.string() + "' 2>&1";
     std::string text;
     FILE* pipe = ::popen(command.c_str(), "r");

@@ -14,6 +14,7 @@
 #include "workflow/bad_input/byte_snapshot.hpp"
 #include "workflow/bad_input/catalogue.hpp"
 #include "workflow/workflow_fixture.hpp"
+#include "test_paths.hpp"
 
 namespace sd::test {
 namespace {
@@ -67,7 +68,7 @@ class BadInputCatalogue : public WorkflowTest {
     ByteSnapshot before = byte_snapshot(scratch());
     for (const auto& c : cases) {
       SCOPED_TRACE(shown(c.args));
-      std::vector<std::string> args{"-s", "KILL", "60", SWARMDESIGN_BINARY};
+      std::vector<std::string> args{"-s", "KILL", "60", ::sd::test::swarmdesign_binary()};
       args.insert(args.end(), c.args.begin(), c.args.end());
       const Outcome outcome = run_program("timeout", args, c.input, environment());
       expect_error(outcome, c.exit_code, c.phrase);

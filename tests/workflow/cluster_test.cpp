@@ -16,6 +16,7 @@
 #include "web/web_client.hpp"
 #include "workflow/design_helpers.hpp"
 #include "workflow/workflow_fixture.hpp"
+#include "test_paths.hpp"
 
 namespace sd::test {
 namespace {
@@ -23,7 +24,7 @@ namespace {
 using namespace std::chrono_literals;
 using nlohmann::json;
 
-const std::string kServices = std::string(SWARMDESIGN_SOURCE_DIR) + "/tests/cluster/services/";
+const std::string kServices = std::string(::sd::test::source_dir()) + "/tests/cluster/services/";
 
 /// "export NAME=value" or "export NAME=\"value\"" as printed by the services' start.
 std::pair<std::string, std::string> exported(const std::string& line) {
@@ -81,7 +82,7 @@ class cluster_projects : public WorkflowTest {
   /// A cluster project on `host`, running this build's swarmdesign, designing on the short AAC.
   void cluster_project(const std::string& name, const std::string& host, int budget) {
     sd_ok({"new-project", name, "--cluster", host, "--cluster-user", this_user(), "--cluster-dir",
-           (scratch() / "cluster").string(), "--cluster-binary", SWARMDESIGN_BINARY});
+           (scratch() / "cluster").string(), "--cluster-binary", ::sd::test::swarmdesign_binary()});
     sd_ok({"select-project", name});
     sd_ok({"set-mission", mission_});
     sd_ok({"set-budget", std::to_string(budget)});

@@ -7,11 +7,12 @@
 #include <thread>
 
 #include "storage/sqlite.hpp"
+#include "test_paths.hpp"
 
 namespace sd::test {
 
 std::filesystem::path write_short_mission(const std::filesystem::path& folder, int seconds) {
-  std::ifstream in(std::filesystem::path(SWARMDESIGN_SOURCE_DIR) / "missions" / "aac.json");
+  std::ifstream in(std::filesystem::path(::sd::test::source_dir()) / "missions" / "aac.json");
   std::stringstream text;
   text << in.rdbuf();
   const std::string shortened = std::regex_replace(text.str(), std::regex("\"duration\": *[0-9.]+"),

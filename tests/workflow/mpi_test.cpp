@@ -5,6 +5,7 @@
 
 #include "workflow/design_helpers.hpp"
 #include "workflow/workflow_fixture.hpp"
+#include "test_paths.hpp"
 
 namespace sd::test {
 namespace {
@@ -20,7 +21,7 @@ class mpi_runs : public WorkflowTest {
   }
   /// `mpirun --oversubscribe -np RANKS swarmdesign args...` in the test's home.
   Outcome mpirun(int ranks, const std::vector<std::string>& args) {
-    std::vector<std::string> line{"--oversubscribe", "-np", std::to_string(ranks), SWARMDESIGN_BINARY};
+    std::vector<std::string> line{"--oversubscribe", "-np", std::to_string(ranks), ::sd::test::swarmdesign_binary()};
     line.insert(line.end(), args.begin(), args.end());
     Environment env = environment();
     // CI runs as root, which mpirun refuses unless told that it is meant.

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "workflow/workflow_fixture.hpp"
+#include "test_paths.hpp"
 
 namespace sd::test {
 namespace {
@@ -43,7 +44,7 @@ TEST_F(workflow_projects, SetMissionWithoutANameOffersANumberedList) {
   EXPECT_EQ(query("SELECT mission FROM projects"), "aac");
 
   // A user's own mission in $SWARMDESIGN_HOME/missions is offered by name too.
-  std::ifstream in(std::string(SWARMDESIGN_SOURCE_DIR) + "/missions/aac.json");
+  std::ifstream in(std::string(::sd::test::source_dir()) + "/missions/aac.json");
   std::stringstream text;
   text << in.rdbuf();
   std::string mission = text.str();

@@ -1,4 +1,5 @@
 #include "workflow/swarmdesign_process.hpp"
+#include "test_paths.hpp"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -71,12 +72,12 @@ pid_t spawn(const std::string& program, const std::vector<std::string>& args, co
 
 pid_t spawn(const std::vector<std::string>& args, const Environment& environment,
             const posix_spawn_file_actions_t* actions, const posix_spawnattr_t* attributes = nullptr) {
-  return spawn(SWARMDESIGN_BINARY, args, environment, actions, attributes);
+  return spawn(::sd::test::swarmdesign_binary(), args, environment, actions, attributes);
 }
 }  // namespace
 
 Outcome run_swarmdesign(const std::vector<std::string>& args, const std::string& input, const Environment& environment) {
-  return run_program(SWARMDESIGN_BINARY, args, input, environment);
+  return run_program(::sd::test::swarmdesign_binary(), args, input, environment);
 }
 
 Outcome run_program(const std::string& program, const std::vector<std::string>& args, const std::string& input,

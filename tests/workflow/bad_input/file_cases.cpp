@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "workflow/bad_input/catalogue.hpp"
+#include "test_paths.hpp"
 
 namespace sd::test::bad_input {
 
@@ -115,7 +116,7 @@ void write_bad_files(const Inputs& in) {
   for (std::size_t i = 0; i < kConfigFiles.size(); ++i) write(numbered(in.files, "config", i), kConfigFiles[i].first);
   for (std::size_t i = 0; i < kStartTraces.size(); ++i) write(numbered(in.files, "start", i), kStartTraces[i].first);
   // Arlequin module sets: one weight document missing, one malformed, one of the wrong size.
-  const std::filesystem::path shipped = std::filesystem::path(SWARMDESIGN_SOURCE_DIR) / "data" / "arlequin";
+  const std::filesystem::path shipped = std::filesystem::path(::sd::test::source_dir()) / "data" / "arlequin";
   for (const char* set : {"set-missing", "set-garbage", "set-short"}) {
     std::filesystem::create_directories(in.files / set);
     for (const char* module : kArlequinModules)
