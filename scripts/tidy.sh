@@ -59,14 +59,53 @@ extra=(--extra-arg=-Wno-error --extra-arg=-Wno-unknown-warning-option --extra-ar
 logs="$(mktemp -d)"
 trap 'rm -rf "$logs"' EXIT
 start=$SECONDS
+
+# GCC's precompiled headers (-include cmake_pch.hxx with its .gch) mean nothing to clang: the
+# check reads a copy of the database without them, so each file is parsed as it is written.
+mkdir -p "$logs/db"
+python3 -c '
+import json, sys
+entries = json.load(open(sys.argv[1]))
+for e in entries:
+    words, kept = e["command"].split(), []
+    for i, w in enumerate(words):
+        pch = w == "-include" and i + 1 < len(words) and words[i + 1].endswith("cmake_pch.hxx")
+        if pch or (i > 0 and words[i - 1] == "-include" and w.endswith("cmake_pch.hxx")) or w == "-Winvalid-pch":
+            continue
+        kept.append(w)
+    e["command"] = " ".join(kept)
+json.dump(entries, open(sys.argv[2], "w"))
+' "$build/compile_commands.json" "$logs/db/compile_commands.json"
+
+# A file clang-tidy found clean is not checked again while nothing it depends on changed
+# (scripts/lib/tidy_keys.py says what a key covers): the cache holds one empty file per clean
+# key, in any clone. Findings are never cached.
+cache="${SWARMDESIGN_TIDY_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/swarmdesign/tidy}"
+mkdir -p "$cache"
+find "$cache" -type f -mtime +30 -delete 2>/dev/null || true
+printf '%s\n' "${files[@]}" | python3 scripts/lib/tidy_keys.py . "$build" "$logs/db/compile_commands.json" \
+  "$("$tidy" --version | tr -s ' \n' ' ') ${extra[*]}" > "$logs/keys"
+to_check=()
+cached=0
+while read -r f key; do
+  if [ "$key" != "-" ] && [ -f "$cache/$key" ]; then
+    touch "$cache/$key"
+    cached=$((cached + 1))
+  else
+    to_check+=("$f")
+  fi
+done < "$logs/keys"
+
 # One log per file; --quiet drops clang-tidy's "N warnings generated" chatter.
-printf '%s\n' "${files[@]}" | xargs -P "$jobs" -I{} sh -c \
-  'f="$1"; shift; "$@" "$f" > "'"$logs"'/$(printf %s "$f" | tr / _).log" 2>&1 || true' \
-  sh {} "$tidy" -p "$build" --quiet "${extra[@]}"
+if ((${#to_check[@]})); then
+  printf '%s\n' "${to_check[@]}" | xargs -P "$jobs" -I{} sh -c \
+    'f="$1"; shift; "$@" "$f" > "'"$logs"'/$(printf %s "$f" | tr / _).log" 2>&1 || true' \
+    sh {} "$tidy" -p "$logs/db" --quiet "${extra[@]}"
+fi
 elapsed=$((SECONDS - start))
 
 # A header's finding is reported once per file that includes it; show each once.
-cat "$logs"/*.log | grep -E '^[^ ].*:[0-9]+:[0-9]+: (warning|error): ' | sort -u > "$logs/findings" || true
+cat "$logs"/*.log 2>/dev/null | grep -E '^[^ ].*:[0-9]+:[0-9]+: (warning|error): ' | sort -u > "$logs/findings" || true
 count=$(wc -l < "$logs/findings")
 if ((count)); then
   # Each finding with its context lines, as clang-tidy printed it, once.
@@ -77,9 +116,13 @@ if ((count)); then
   exit 1
 fi
 # A file clang-tidy could not parse yields an error without a check name; it fails too.
-if grep -lE 'error: |Error while processing' "$logs"/*.log >/dev/null 2>&1; then
+if grep -lsE 'error: |Error while processing' "$logs"/*.log >/dev/null 2>&1; then
   cat "$logs"/*.log
   echo "tidy: FAILED: clang-tidy could not process some files, ${elapsed}s on $jobs jobs"
   exit 1
 fi
-echo "tidy: OK: ${#files[@]} files clean, ${elapsed}s on $jobs jobs"
+# Every file checked now is clean: remember it.
+while read -r f key; do
+  if [ "$key" != "-" ] && [ ! -f "$cache/$key" ]; then : > "$cache/$key"; fi
+done < "$logs/keys"
+echo "tidy: OK: ${#files[@]} files clean (${#to_check[@]} checked, $cached unchanged since a clean check), ${elapsed}s on $jobs jobs"
