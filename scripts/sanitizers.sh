@@ -3,10 +3,11 @@
 #   scripts/sanitizers.sh          both stages, ASan+UBSan then TSan (what scripts/test.sh runs)
 #   scripts/sanitizers.sh --asan   build-asan: clang, ASan+UBSan (+ libFuzzer targets), the suite
 #   scripts/sanitizers.sh --tsan   build-tsan: clang, TSan, the tests of the concurrent parts
-# Any sanitizer report fails its test, and so the stage. With CCACHE_DIR set (and ccache
-# installed) the builds go through ccache; CI builds cold.
+# Any sanitizer report fails its test, and so the stage. Both trees compile through ccache
+# (CMakeLists.txt), so a second clone on the same machine builds warm.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/lib/stages.sh
 
 jobs="$(nproc)"
 # Suppressions, only for third-party code we cannot fix, each with its reason: scripts/sanitizers/.
@@ -18,21 +19,8 @@ supp() { [ -f "scripts/sanitizers/$1" ] && echo ":suppressions=$PWD/scripts/sani
 configure() {  # configure <dir> <cmake args...>
   local dir="$1"
   shift
-  local launcher=()
-  if [ -n "${CCACHE_DIR:-}" ] && command -v ccache >/dev/null 2>&1; then
-    launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-  fi
-  CC=clang CXX=clang++ cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" \
-    -DSWARMDESIGN_BENCH=OFF -DSWARMDESIGN_WERROR=ON "${launcher[@]}" "$@"
-}
-
-stage() {  # stage <name>: prints how long the previous stage took
-  local now
-  now=$(date +%s)
-  if [ -n "${stage_start:-}" ]; then echo "sanitizers: $stage_name took $((now - stage_start)) s"; fi
-  stage_name="$1"
-  stage_start=$now
-  [ "$1" = done ] || echo "sanitizers: $1"
+  CC=clang CXX=clang++ cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1" \
+    -DSWARMDESIGN_BENCH=OFF -DSWARMDESIGN_WERROR=ON "$@" >/dev/null
 }
 
 # ASan+UBSan: the whole suite but for what cannot run under them or would not fit CI's time:
@@ -46,7 +34,8 @@ stage() {  # stage <name>: prints how long the previous stage took
 #                simulator code runs in every unit test of simulator/, modules/, evaluation/
 asan() {
   stage "ASan+UBSan build (build-asan)"
-  configure build-asan -DSWARMDESIGN_SANITIZE=address,undefined -DSWARMDESIGN_FUZZ=ON
+  configure build-asan -DSWARMDESIGN_SANITIZE=address,undefined -DSWARMDESIGN_FUZZ=ON \
+    -DSWARMDESIGN_TEST_LABELS="unit;workflow"
   cmake --build build-asan -j "$jobs"
   stage "ASan+UBSan tests: labels unit, workflow, fuzz"
   ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:abort_on_error=0:print_stacktrace=1:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1$(supp asan.supp)" \
@@ -78,4 +67,4 @@ case "${1:-}" in
   -h|--help) sed -n '2,7p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
   *) echo "sanitizers.sh: unknown option '$1' (see scripts/sanitizers.sh --help)" >&2; exit 2 ;;
 esac
-stage done
+stage_end
