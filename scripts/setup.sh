@@ -1,47 +1,63 @@
 #!/usr/bin/env bash
-# Installs every dependency SwarmDesign needs from Debian's archive, then configures and
-# builds it in ./build. Safe to run again: apt-get and CMake skip what is already done.
+# Sets SwarmDesign up on Debian 12: installs what it needs from Debian's archive (and the web
+# app's npm packages), then configures and builds it in ./build. Safe to run again: apt-get,
+# npm, CMake and ccache skip what is already done.
+#   scripts/setup.sh            swarmdesign, its web app and its Python module: no daemon,
+#                               browser, sanitizer or linter is installed, no test is built
+#   scripts/setup.sh --cluster  the same with MPI (mpirun -np N swarmdesign ...)
+#   scripts/setup.sh --tests    everything scripts/test.sh needs: the test-only packages too
+#                               (scripts/test.sh --help lists them), and every target built
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/lib/stages.sh
+source scripts/lib/packages.sh
 
-packages=(
-  build-essential cmake ninja-build pkg-config git
-  libcli11-dev nlohmann-json3-dev libsqlite3-dev libsodium-dev libboost-dev r-cran-irace
-  libgtest-dev libgmock-dev libbenchmark-dev
-  libcpp-httplib-dev  # the web app's server (run-exp)
-  libpugixml-dev  # ARGoS experiment files (mission export-argos)
-  chromium  # the web app's browser tests (headless)
-  ffmpeg  # ffprobe checks the web app's downloaded run videos (browser tests)
-  jq  # bench/native_vs_irace.sh
-  openmpi-bin libopenmpi-dev  # designs on MPI ranks (mpirun -np N swarmdesign ...)
-  slurm-client  # cluster projects submit designs with sbatch from a login node
-  slurmctld slurmd munge openssh-server  # the cluster tests start a one-node Slurm and an sshd
-  clang libclang-rt-14-dev  # scripts/sanitizers.sh: ASan, UBSan, TSan and libFuzzer runtimes
-  clang-tidy  # scripts/tidy.sh, with the repository's .clang-tidy
-  pybind11-dev python3-dev  # the Python module swarmdesign (build/python; src/python)
-  python3-numpy python3-pytest python3-pandas python3-matplotlib  # its arrays, tests, tables, examples
-)
-# Node.js and npm bundle the web app's front end; a machine that has them already keeps its own.
-if ! command -v npm >/dev/null 2>&1; then packages+=(nodejs npm); fi
-
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+with_tests=0
+with_cluster=0
+for arg in "$@"; do
+  case "$arg" in
+    --tests) with_tests=1; with_cluster=1 ;;
+    --cluster) with_cluster=1 ;;
+    -h|--help) sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) echo "setup.sh: unknown option '$arg' (see scripts/setup.sh --help)" >&2; exit 2 ;;
+  esac
 done
-if ((${#missing[@]})); then
-  sudo=""
-  if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
-  echo "setup: installing ${missing[*]}"
-  $sudo apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+
+stage "set-up: Debian packages"
+install_packages setup "${product_packages[@]}"
+if ((with_tests)); then
+  install_packages setup "${test_packages[@]}"
+elif ((with_cluster)); then
+  install_packages setup "${cluster_packages[@]}"
 fi
 
 # The front end's npm packages, exactly as frontend/package-lock.json pins them.
 if [ ! -f frontend/node_modules/.package-lock.json ] || [ frontend/package-lock.json -nt frontend/node_modules/.package-lock.json ]; then
-  echo "setup: installing the front end's npm packages"
+  stage "set-up: npm packages of the front end"
   (cd frontend && npm ci --no-audit --no-fund --loglevel=error)
 fi
 
+# A tree configured before keeps its choice of tests and benchmarks (a developer's tree that
+# scripts/test.sh built stays whole); a new one builds the program alone unless --tests.
+options=(-DSWARMDESIGN_WERROR="${CI:+ON}")
+if ((with_tests)); then
+  options+=(-DSWARMDESIGN_TESTS=ON -DSWARMDESIGN_BENCH=ON)
+elif [ ! -f build/CMakeCache.txt ]; then
+  options+=(-DSWARMDESIGN_TESTS=OFF -DSWARMDESIGN_BENCH=OFF)
+fi
 build_type="${SWARMDESIGN_BUILD_TYPE:-Release}"
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE="$build_type" -DSWARMDESIGN_WERROR="${CI:+ON}"
-cmake --build build -j "$(nproc)"
+if ((with_tests)); then
+  stage "Release build: everything (build/)"
+else
+  stage "Release build: swarmdesign, web app, Python module (build/)"
+fi
+configure_log="$(mktemp)"
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE="$build_type" "${options[@]}" > "$configure_log" 2>&1 \
+  || { cat "$configure_log"; rm -f "$configure_log"; exit 1; }
+rm -f "$configure_log"
+if ((with_tests)); then
+  cmake --build build -j "$(nproc)"
+else
+  cmake --build build -j "$(nproc)" --target product
+fi
+stage_end

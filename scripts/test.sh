@@ -1,31 +1,75 @@
 #!/usr/bin/env bash
-# Sets everything up (scripts/setup.sh) and runs the whole test suite with CTest.
-#   scripts/test.sh          everything (what CI runs), one stage after the other:
-#                              clang-tidy over src/ (scripts/tidy.sh, .clang-tidy),
-#                              the Release suite (build/), then the suite under sanitizers
-#                              (scripts/sanitizers.sh: ASan+UBSan in build-asan, TSan in build-tsan)
-#   scripts/test.sh --fast   the unit tests only (CTest label `unit`), on an existing build:
-#                            rebuilds what changed, no set-up; a minute or two
-# Other kinds by label: ctest --test-dir build -L workflow|cluster|calibration|slow|browser
+# Sets up everything the tests need and runs them all (what CI runs, .ci/run).
+#   scripts/test.sh           everything, one stage after the other, each timed, then a table:
+#                               set-up: scripts/setup.sh --tests (the program's packages and the
+#                                 test-only ones below; every target, benchmarks included)
+#                               clang-tidy over src/ (scripts/tidy.sh, .clang-tidy)
+#                               the Release suite (build/): every CTest label
+#                               ASan+UBSan (build-asan) and TSan (build-tsan): scripts/sanitizers.sh
+#                               a check that no daemon the tests started or installed runs on
+#   scripts/test.sh --quick   on a built tree: rebuilds what changed, the unit tests and a smoke
+#                             of each front end (CLI, web page in chromium, Python); ~3 min
+#   scripts/test.sh --fast    on a built tree: rebuilds what changed and runs the unit tests
+# Test-only Debian packages it installs (scripts/lib/packages.sh says why each):
+#   TEST_PACKAGES
+# Installing them starts no service, and the ones it installs stay disabled: the cluster
+# tests start their own Slurm and sshd on private ports and stop them.
+# Other kinds by label: ctest --test-dir build -L unit|workflow|cluster|calibration|slow|browser|python
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/lib/stages.sh
+source scripts/lib/packages.sh
+
+jobs="$(nproc)"
+
+# slowest BUILD N: the N longest tests of the last ctest run in BUILD, from CTest's own timings.
+slowest() {
+  local cost="$1/Testing/Temporary/CTestCostData.txt"
+  [ -f "$cost" ] || return 0
+  echo "The $2 slowest tests of $1 (seconds):"
+  awk '/^---/ { exit } NF == 3 { printf "%8.1f  %s\n", $3, $1 }' "$cost" | sort -rn | head -n "$2"
+}
+
+need_built_tree() {
+  if [ ! -f build/build.ninja ] || ! grep -q '^SWARMDESIGN_TESTS:BOOL=ON' build/CMakeCache.txt; then
+    echo "test.sh $1: no test build yet; run scripts/test.sh once first (or scripts/setup.sh --tests)" >&2
+    exit 2
+  fi
+}
+
 case "${1:-}" in
   "")
-    ./scripts/setup.sh
+    services_before="$(sd_daemon_pids)"
+    stage "set-up: test packages"
+    install_packages test "${product_packages[@]}" "${test_packages[@]}"
+    ./scripts/setup.sh --tests
+    stage "clang-tidy over src/"
     ./scripts/tidy.sh
-    ctest --test-dir build --output-on-failure -j "$(nproc)" --timeout 900
+    stage "Release tests (build/, every label)"
+    ctest --test-dir build --output-on-failure -j "$jobs" --timeout 900
+    slowest build 20
     ./scripts/sanitizers.sh
+    stage "no service left running or enabled"
+    check_no_new_services "$services_before"
+    ;;
+  --quick)
+    need_built_tree --quick
+    stage "build (what changed)"
+    cmake --build build -j "$jobs"
+    stage "unit tests"
+    ctest --test-dir build --output-on-failure -j "$jobs" --timeout 900 -L unit
+    stage "smoke: CLI, web page, Python"
+    ./scripts/smoke.sh build
     ;;
   --fast)
-    if [ ! -f build/build.ninja ]; then
-      echo "test.sh --fast: no build yet; run scripts/test.sh (or scripts/setup.sh) once first" >&2
-      exit 2
-    fi
-    cmake --build build -j "$(nproc)"
-    ctest --test-dir build --output-on-failure -j "$(nproc)" --timeout 900 -L unit
+    need_built_tree --fast
+    stage "build (what changed)"
+    cmake --build build -j "$jobs"
+    stage "unit tests"
+    ctest --test-dir build --output-on-failure -j "$jobs" --timeout 900 -L unit
     ;;
   -h|--help)
-    sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'
+    sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//' | sed "s|^  TEST_PACKAGES|  ${test_packages[*]}|"
     ;;
   *)
     echo "test.sh: unknown option '$1' (see scripts/test.sh --help)" >&2
