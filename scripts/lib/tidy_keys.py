@@ -31,7 +31,9 @@ def main() -> int:
     for entry in commands:
         source = relative(entry["file"], entry.get("directory", root))
         text = entry.get("command") or " ".join(entry.get("arguments", []))
-        by_source[source] = (text.replace(build_abs, "<build>").replace(root, "<root>"), entry.get("output"))
+        words = text.split()
+        output = entry.get("output") or (words[words.index("-o") + 1] if "-o" in words[:-1] else None)
+        by_source[source] = (text.replace(build_abs, "<build>").replace(root, "<root>"), output)
 
     deps = {}
     listing = subprocess.run(["ninja", "-C", build, "-t", "deps"], capture_output=True, text=True, check=False).stdout
