@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The test suite under sanitizers (docs/hardening.md). Needs what scripts/setup.sh installs.
+# The test suite under sanitizers (docs/hardening.md). Needs what scripts/setup.sh --tests installs.
 #   scripts/sanitizers.sh          both stages, ASan+UBSan then TSan (what scripts/test.sh runs)
 #   scripts/sanitizers.sh --asan   build-asan: clang, ASan+UBSan (+ libFuzzer targets), the suite
 #   scripts/sanitizers.sh --tsan   build-tsan: clang, TSan, the tests of the concurrent parts
@@ -64,7 +64,7 @@ case "${1:-}" in
   "") asan; tsan ;;
   --asan) asan ;;
   --tsan) tsan ;;
-  -h|--help) sed -n '2,7p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+  -h|--help) awk 'NR > 1 && /^#/ { sub(/^# ?/, ""); print; next } NR > 1 { exit }' "$0"; exit 0 ;;
   *) echo "sanitizers.sh: unknown option '$1' (see scripts/sanitizers.sh --help)" >&2; exit 2 ;;
 esac
 stage_end

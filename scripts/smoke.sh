@@ -8,7 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 case "${1:-}" in
-  -h|--help) sed -n '2,7p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+  -h|--help) awk 'NR > 1 && /^#/ { sub(/^# ?/, ""); print; next } NR > 1 { exit }' "$0"; exit 0 ;;
 esac
 build="$(realpath "${1:-build}")"
 bin="$build/swarmdesign"
@@ -25,15 +25,17 @@ echo "smoke: CLI"
 "$bin" evaluate --mission aac --seeds 1-3 --json "${walk[@]}" > "$tmp/cli.json"
 python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert len(d["runs"]) == 3, d' "$tmp/cli.json" \
   || fail "evaluate --json did not give three runs"
-python3 -c 'import json,sys; m=json.load(open(sys.argv[1])); m["duration"]=10; json.dump(m, open(sys.argv[2], "w"))' \
-  missions/aac.json "$tmp/aac-short.json"
+# The catalogue's AAC, 10 s long (mission files may hold // comments: no JSON parser here).
+sed -E 's/"duration": *[0-9.]+/"duration": 10/' missions/aac.json > "$tmp/aac-short.json"
 "$bin" design --mission "$tmp/aac-short.json" --budget 1100 --fsm --chocolate --seed 1 --out "$tmp/design" --json \
   > "$tmp/design.json" || fail "design"
 python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["elites"][0]["configuration"], d' "$tmp/design.json" \
   || fail "design --json has no best configuration"
 
 echo "smoke: Python"
-PYTHONPATH="$build/python" python3 - "$tmp/cli.json" <<'EOF' || fail "the Python module"
+# The python3 the module was built for (Debian's, with its numpy), not whichever comes first.
+python="$(sed -n 's/^PYTHON_EXECUTABLE:[A-Z]*=//p' "$build/CMakeCache.txt")"
+PYTHONPATH="$build/python" "${python:-python3}" - "$tmp/cli.json" <<'EOF' || fail "the Python module"
 import json, sys
 import swarmdesign as sd
 cli = [run["score"] for run in json.load(open(sys.argv[1]))["runs"]]

@@ -6,7 +6,7 @@
 #                               clang-tidy over src/ (scripts/tidy.sh, .clang-tidy)
 #                               the Release suite (build/): every CTest label
 #                               ASan+UBSan (build-asan) and TSan (build-tsan): scripts/sanitizers.sh
-#                               a check that no daemon the tests started or installed runs on
+#                               a check that no service it installed or started is left on
 #   scripts/test.sh --quick   on a built tree: rebuilds what changed, the unit tests and a smoke
 #                             of each front end (CLI, web page in chromium, Python); ~3 min
 #   scripts/test.sh --fast    on a built tree: rebuilds what changed and runs the unit tests
@@ -14,7 +14,7 @@
 #   TEST_PACKAGES
 # Installing them starts no service, and the ones it installs stay disabled: the cluster
 # tests start their own Slurm and sshd on private ports and stop them.
-# Other kinds by label: ctest --test-dir build -L unit|workflow|cluster|calibration|slow|browser|python
+# Other kinds by label: ctest --test-dir build -L unit|workflow|cluster|calibration|slow|browser|python|package
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/lib/stages.sh
@@ -69,7 +69,9 @@ case "${1:-}" in
     ctest --test-dir build --output-on-failure -j "$jobs" --timeout 900 -L unit
     ;;
   -h|--help)
-    sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//' | sed "s|^  TEST_PACKAGES|  ${test_packages[*]}|"
+    awk 'NR > 1 && /^#/ { sub(/^# ?/, ""); print; next } NR > 1 { exit }' "$0" | while IFS= read -r line; do
+      if [ "$line" = "  TEST_PACKAGES" ]; then echo "${test_packages[*]}" | fold -s -w 92 | sed 's/^/  /'; else echo "$line"; fi
+    done
     ;;
   *)
     echo "test.sh: unknown option '$1' (see scripts/test.sh --help)" >&2
