@@ -42,6 +42,7 @@ case "${1:-}" in
     services_before="$(sd_daemon_pids)"
     stage "set-up: test packages"
     install_packages test "${product_packages[@]}" "${test_packages[@]}"
+    stage_end
     ./scripts/setup.sh --tests
     stage "clang-tidy over src/"
     ./scripts/tidy.sh
