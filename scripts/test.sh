@@ -27,7 +27,8 @@ slowest() {
   local cost="$1/Testing/Temporary/CTestCostData.txt"
   [ -f "$cost" ] || return 0
   echo "The $2 slowest tests of $1 (seconds):"
-  awk '/^---/ { exit } NF == 3 { printf "%8.1f  %s\n", $3, $1 }' "$cost" | sort -rn | head -n "$2"
+  # (awk, not head: head would leave sort writing to a closed pipe, and pipefail fail on it)
+  awk '/^---/ { exit } NF == 3 { printf "%8.1f  %s\n", $3, $1 }' "$cost" | sort -rn | awk -v n="$2" 'NR <= n' 
 }
 
 need_built_tree() {
