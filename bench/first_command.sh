@@ -33,10 +33,23 @@ mount --bind /dev "$run/dev"
 mount --bind /dev/pts "$run/dev/pts"
 cp /etc/resolv.conf "$run/etc/resolv.conf"
 git clone -q "$repo" "$run/root/swarmdesign"
+# A network that inspects TLS (a lab's or a sandbox's proxy) has its own certificate authority;
+# the fresh system trusts what this machine trusts, as its administrator would set it up
+# (a plain network needs none of this). apt's ca-certificates picks them up when installed.
+extra_env=()
+if compgen -G "/usr/local/share/ca-certificates/*.crt" >/dev/null; then
+  mkdir -p "$run/usr/local/share/ca-certificates"
+  cp /usr/local/share/ca-certificates/*.crt "$run/usr/local/share/ca-certificates/"
+fi
+if [ -n "${NODE_EXTRA_CA_CERTS:-}" ] && [ -f "$NODE_EXTRA_CA_CERTS" ]; then
+  mkdir -p "$run$(dirname "$NODE_EXTRA_CA_CERTS")"
+  cp "$NODE_EXTRA_CA_CERTS" "$run$NODE_EXTRA_CA_CERTS"
+  extra_env+=("NODE_EXTRA_CA_CERTS=$NODE_EXTRA_CA_CERTS")
+fi
 
 echo "== README command 1 (timed)"
 start=$(date +%s)
-chroot "$run" /usr/bin/env -i HOME=/root PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin TERM=dumb \
+chroot "$run" /usr/bin/env -i HOME=/root PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin TERM=dumb "${extra_env[@]}" \
   bash -c 'cd /root/swarmdesign && ./scripts/setup.sh && ./build/swarmdesign design --mission aac --budget 2000 --fsm --chocolate --seed 1 --out aac-design' \
   > "$run/first-command.log" 2>&1 || { tail -40 "$run/first-command.log"; echo "first_command.sh: the command failed" >&2; exit 1; }
 took=$(($(date +%s) - start))
