@@ -28,7 +28,9 @@ slowest() {
   [ -f "$cost" ] || return 0
   echo "The $2 slowest tests of $1 (seconds):"
   # (awk, not head: head would leave sort writing to a closed pipe, and pipefail fail on it)
-  awk '/^---/ { exit } NF == 3 { printf "%8.1f  %s\n", $3, $1 }' "$cost" | sort -rn | awk -v n="$2" 'NR <= n' 
+  # Each line is "NAME RUNS SECONDS"; a parameterised test's NAME has spaces in it.
+  awk '/^---/ { exit } NF >= 3 { t = $NF; sub(/ +[0-9]+ +[0-9.e+-]+$/, ""); printf "%8.1f  %s\n", t, $0 }' "$cost" \
+    | sort -rn | awk -v n="$2" 'NR <= n' 
 }
 
 need_built_tree() {
