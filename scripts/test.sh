@@ -8,7 +8,7 @@
 #                               ASan+UBSan (build-asan) and TSan (build-tsan): scripts/sanitizers.sh
 #                               a check that no service it installed or started is left on
 #   scripts/test.sh --quick   on a built tree: rebuilds what changed, the unit tests and a smoke
-#                             of each front end (CLI, web page in chromium, Python); ~3 min
+#                             of each front end (CLI, web page in chromium, Python); under a minute
 #   scripts/test.sh --fast    on a built tree: rebuilds what changed and runs the unit tests
 # Test-only Debian packages it installs (scripts/lib/packages.sh says why each):
 #   TEST_PACKAGES
