@@ -52,6 +52,7 @@ case "${1:-}" in
     stage "Release tests (build/, every label)"
     ctest --test-dir build --output-on-failure -j "$jobs" --timeout 900
     slowest build 20
+    stage_end
     ./scripts/sanitizers.sh
     stage "no service left running or enabled"
     check_no_new_services "$services_before"
