@@ -2,8 +2,8 @@
 # string, so the binary needs no data files at run time. The table it defines is
 #   std::span<const TYPE> FUNCTION()  in namespace NAMESPACE, declared in HEADER,
 # with TYPE = {std::string_view name (file name without .json), std::string_view json}.
-# Used for the mission catalogue (src/missions), the Arlequin weights (src/modules) and
-# EvoStick's training arenas (src/evostick).
+# Run at build time by sd_embed_json() (cmake/embed.cmake), for the mission catalogue, the
+# Arlequin weights, EvoStick's training arenas and the pseudo-reality specifications.
 file(GLOB json_files ${DIR}/*.json)
 list(SORT json_files)
 # The comment names the folder as the repository does, not by its absolute path: the file is
