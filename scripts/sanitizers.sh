@@ -45,12 +45,12 @@ asan() {
 }
 
 # TSan: the concurrent parts only (the rest is single-threaded code the ASan stage covers):
-# the executor (core), design and evolution jobs, two designs sharing the pool, leases racing
+# the executor (core), the web server's cluster collector, design and evolution jobs, two designs sharing the pool, leases racing
 # sweeps (app), the web server with its background designs and experiments, Exec runs (their
 # registry) and many viewers (web),
 # concurrent sign-ups, the designs store's leases and a design detached from the CLI
 # (workflow). Test folders built: core, app, web, workflow.
-tsan_tests='^(Executor|DesignJob|EvolutionJob|ProjectDesign|LeaseRace|WebServer|WebSecurity|WebConcurrency|RunRegistry|workflow_concurrency|workflow_designs|DesignLease|run_design)\.'
+tsan_tests='^(Executor|ClusterCollection|DesignJob|EvolutionJob|ProjectDesign|LeaseRace|WebServer|WebSecurity|WebConcurrency|RunRegistry|workflow_concurrency|workflow_designs|DesignLease|run_design)\.'
 tsan() {
   stage "TSan build (build-tsan)"
   configure build-tsan -DSWARMDESIGN_SANITIZE=thread -DSWARMDESIGN_TEST_FOLDERS="core;app;web;workflow"

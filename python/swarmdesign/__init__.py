@@ -568,7 +568,8 @@ class ExperimentReport:
 class Account:
     """A SwarmDesign home as the signed-in user sees it (``swarmdesign sign-in`` made the
     session): projects, their designs and experiments, reports. It only reads, through the
-    store every CLI command opens. home: the SwarmDesign home (None: $SWARMDESIGN_HOME or the
+    store every CLI command opens (collect is its one step that works: it reaches the cluster).
+    home: the SwarmDesign home (None: $SWARMDESIGN_HOME or the
     default)."""
 
     def __init__(self, home: Union[None, str, "os.PathLike[str]"] = None):
@@ -589,7 +590,14 @@ class Account:
         raise NotFoundError(f"design {design_id}: no such design in the project")
 
     def experiments(self, project: Optional[str] = None) -> Any:
+        """The project's experiments and how far each is: a read, it starts nothing (a cluster
+        experiment shows what :meth:`collect` last brought home)."""
         return _core.account_experiments(self.home, project)
+
+    def collect(self, project: Optional[str] = None, threads: int = 0) -> Any:
+        """Brings a cluster project's finished experiment designs home and assesses them, as
+        ``swarmdesign collect --json`` does: what came home, and the experiments' progress."""
+        return _core.account_collect(self.home, project, threads)
 
     def experiment_report(self, experiment: str, project: Optional[str] = None) -> ExperimentReport:
         """The experiment's report as ``swarmdesign report --json`` computes it."""

@@ -214,4 +214,29 @@ void refresh_cluster_experiment(Home& home, const storage::Project& project, con
   }
 }
 
+namespace {
+int designs_done(storage::Experiments& store, std::int64_t experiment_id) {
+  int done = 0;
+  for (const auto& d : store.designs(experiment_id)) done += d.stage == storage::DesignStage::done ? 1 : 0;
+  return done;
+}
+}  // namespace
+
+ClusterCollection collect_cluster_experiments(Home& home, const storage::User& user,
+                                              const std::optional<std::string>& project, unsigned threads) {
+  ClusterCollection out;
+  const storage::Project p = project_or_active(home, user, project);
+  if (!p.cluster) return out;
+  storage::Experiments store(home.workspace(), p);
+  for (const auto& experiment : store.list()) {
+    if (experiment.state != storage::DesignState::running) continue;
+    ++out.experiments;
+    const int done_before = designs_done(store, experiment.id);
+    refresh_cluster_experiment(home, p, experiment, threads);
+    out.designs_home += designs_done(store, experiment.id) - done_before;
+    if (store.get(experiment.name).state == storage::DesignState::running) ++out.still_running;
+  }
+  return out;
+}
+
 }  // namespace sd::app

@@ -38,4 +38,20 @@ ClusterExperimentSubmission submit_cluster_experiment(Home& home, const storage:
 void refresh_cluster_experiment(Home& home, const storage::Project& project, const storage::Experiment& experiment,
                                 unsigned threads = 0);
 
+/// What collect_cluster_experiments did.
+struct ClusterCollection {
+  int experiments = 0;     // running cluster experiments looked at
+  int designs_home = 0;    // designs that came home (and were assessed) in this call
+  int still_running = 0;   // experiments whose array still runs
+};
+
+/// Collecting, the one step that does work for a cluster experiment after its submission:
+/// refreshes every running experiment of the project (refresh_cluster_experiment). Reads
+/// (experiments_progress, status, listings) never call it; the commands that want the results
+/// (`swarmdesign collect`, `experiment`, `report`) and the web server's ticker do. Nothing to
+/// do for a local project.
+ClusterCollection collect_cluster_experiments(Home& home, const storage::User& user,
+                                              const std::optional<std::string>& project = std::nullopt,
+                                              unsigned threads = 0);
+
 }  // namespace sd::app

@@ -5,7 +5,6 @@
 #include <map>
 #include <numeric>
 
-#include "app/cluster_experiments.hpp"
 #include "app/design_method.hpp"
 #include "app/assess_job.hpp"
 #include "app/errors.hpp"
@@ -286,9 +285,7 @@ std::vector<ExperimentProgress> experiments_progress(Home& home, const storage::
                                                      const std::optional<std::string>& project) {
   const storage::Project p = project_or_active(home, user, project);
   storage::Experiments store(home.workspace(), p);
-  // A cluster experiment's designs come home (and are assessed) as their tasks end.
-  if (p.cluster)
-    for (const auto& experiment : store.list()) refresh_cluster_experiment(home, p, experiment);
+  // A read only: a cluster experiment's designs come home through collect_cluster_experiments.
   std::vector<ExperimentProgress> all;
   for (const auto& experiment : store.list()) {
     ExperimentProgress progress{experiment, 0, 0, std::nullopt, std::nullopt};

@@ -125,7 +125,9 @@ ExperimentOutcome run_experiment(StartedExperiment& experiment, const Experiment
 void assess_design(storage::Experiments& store, const storage::ExperimentDesign& design,
                    const experiments::Protocol& protocol, const ExperimentRunOptions& options);
 
-/// A project's experiments with their progress (status, the web monitor).
+/// A project's experiments with their progress (status, the web monitor). A pure read: it starts
+/// no process and no simulation; a cluster experiment shows what collect_cluster_experiments
+/// (cluster_experiments.hpp) last brought home.
 struct ExperimentProgress {
   storage::Experiment experiment;
   int designs = 0, designs_done = 0;

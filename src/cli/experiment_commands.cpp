@@ -246,6 +246,8 @@ void print_headline(const nlohmann::json& doc) {
 
 void report_command(const ReportOptions& o) {
   app::Home home;
+  // A report is asked for its results: a cluster experiment's finished designs come home first.
+  app::collect_cluster_experiments(home, app::signed_in_user(home), o.project.empty() ? std::nullopt : std::optional(o.project));
   const nlohmann::json doc = app::experiment_report_document(home, app::signed_in_user(home), o.experiment,
                                                              o.project.empty() ? std::nullopt : std::optional(o.project));
   const std::filesystem::path out = o.out.empty() ? "report-" + o.experiment : o.out;
@@ -260,6 +262,35 @@ void report_command(const ReportOptions& o) {
   print_headline(doc);
   std::cout << "Written: " << (out / "report.html").string() << " (open it in a browser; it needs no network) and "
             << files.size() - 2 << " CSV files in " << out.string() << "\n";
+}
+
+struct CollectOptions {
+  std::string project;
+  unsigned threads = 0;
+  bool json = false;
+};
+
+void collect_command(const CollectOptions& o) {
+  app::Home home;
+  const auto user = app::signed_in_user(home);
+  const std::optional<std::string> project = o.project.empty() ? std::nullopt : std::optional(o.project);
+  const storage::Project p = app::project_or_active(home, user, project);
+  if (!p.cluster && !o.json) {
+    std::cout << "Project " << p.name << " runs on this machine: its experiments' designs are already here.\n";
+    return;
+  }
+  const app::ClusterCollection c = app::collect_cluster_experiments(home, user, p.name, o.threads);
+  if (o.json) {
+    std::cout << app::collection_document(p.name, c, app::experiments_progress(home, user, p.name)).dump(2) << "\n";
+    return;
+  }
+  if (c.experiments == 0) {
+    std::cout << "Project " << p.name << " has no experiment running on the cluster.\n";
+    return;
+  }
+  std::cout << c.designs_home << " design" << (c.designs_home == 1 ? "" : "s") << " came home and " << (c.designs_home == 1 ? "was" : "were")
+            << " assessed; " << c.still_running << " of " << c.experiments << " experiment" << (c.experiments == 1 ? "" : "s")
+            << " still running on the cluster.\n  see them: swarmdesign status\n";
 }
 
 CommandRegistrar registrar{45, [](CLI::App& app, Context&) {
@@ -324,6 +355,20 @@ CommandRegistrar registrar{45, [](CLI::App& app, Context&) {
       "experiment is reported as far as it went.\n\n"
       "Example:\n  swarmdesign report validation --out validation-report");
   report->callback([r] { report_command(*r); });
+
+  auto c = std::make_shared<CollectOptions>();
+  auto* collect = app.add_subcommand("collect", "Bring a cluster project's finished experiment designs home and assess them");
+  collect->add_option("--project", c->project, "The cluster project (default: the active one)");
+  collect->add_option("--threads", c->threads, "Simulations in parallel for the assessments (default: all cores)")
+      ->check(CLI::NonNegativeNumber);
+  collect->add_flag("--json", c->json, "Print what was collected and the experiments' progress as JSON");
+  collect->footer(
+      "A cluster experiment's designs are made by Slurm array tasks; each comes home when its task\n"
+      "ends and is assessed here on the experiment's fresh seeds. status only reads what is here (a\n"
+      "poll starts no work), so run collect to bring results in; report and experiment collect\n"
+      "first, and the web server collects the projects its pages show every 20 s.\n\n"
+      "Example:\n  swarmdesign collect && swarmdesign status");
+  collect->callback([c] { collect_command(*c); });
 }};
 
 }  // namespace

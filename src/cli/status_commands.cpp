@@ -64,7 +64,7 @@ void print_race_log(const std::vector<storage::RaceRecord>& log) {
   }
 }
 
-void print_experiments(const std::vector<app::ExperimentProgress>& experiments) {
+void print_experiments(const std::vector<app::ExperimentProgress>& experiments, bool cluster) {
   for (const auto& e : experiments) {
     std::cout << "Experiment " << e.experiment.name << ": " << storage::to_string(e.experiment.state) << ", "
               << e.designs_done << " of " << e.designs << " designs done";
@@ -73,6 +73,8 @@ void print_experiments(const std::vector<app::ExperimentProgress>& experiments) 
                 << app::mission_label(e.current->plan.mission) << " / " << e.current->plan.condition << " #" << e.current->plan.replicate
                 << " (" << storage::to_string(e.current->stage) << ")";
     std::cout << "\n";
+    if (cluster && e.experiment.state == storage::DesignState::running)
+      std::cout << "  Its designs run on the cluster; bring the finished ones home with: swarmdesign collect\n";
     if (e.experiment.state == storage::DesignState::interrupted)
       std::cout << "  It was interrupted; continue it by running the same swarmdesign experiment command again\n";
     if (e.experiment.state == storage::DesignState::finished)
@@ -96,7 +98,7 @@ void status(const StatusOptions& o) {
     std::cout << document.dump(2) << "\n";
     return;
   }
-  print_experiments(experiments);
+  print_experiments(experiments, status.project.cluster.has_value());
   if (!status.design) {
     if (experiments.empty())
       std::cout << "Project " << status.project.name << " has no design yet; start one with: swarmdesign run-design\n";

@@ -11,6 +11,7 @@
 
 #include "app/accounts.hpp"
 #include "app/documents.hpp"
+#include "app/cluster_experiments.hpp"
 #include "app/experiment_job.hpp"
 #include "app/experiment_report.hpp"
 #include "app/home.hpp"
@@ -50,6 +51,17 @@ py::object experiments(const std::optional<std::string>& home_folder, const std:
   return to_python(app::experiments_document(app::experiments_progress(*home, user, project)));
 }
 
+py::object collect(const std::optional<std::string>& home_folder, const std::optional<std::string>& project, unsigned threads) {
+  auto home = open_home(home_folder);
+  const storage::User user = app::signed_in_user(*home);
+  const storage::Project p = app::project_or_active(*home, user, project);
+  const app::ClusterCollection c = [&] {
+    py::gil_scoped_release free;  // assessing is simulation
+    return app::collect_cluster_experiments(*home, user, p.name, threads);
+  }();
+  return to_python(app::collection_document(p.name, c, app::experiments_progress(*home, user, p.name)));
+}
+
 py::object experiment_report(const std::string& experiment, const std::optional<std::string>& home_folder,
                              const std::optional<std::string>& project) {
   auto home = open_home(home_folder);
@@ -64,6 +76,8 @@ void bind_accounts(py::module_& m) {
         "A project's designs, one row each (the active project when none is named).");
   m.def("account_experiments", &experiments, py::arg("home") = py::none(), py::arg("project") = py::none(),
         "A project's experiments and how far each is.");
+  m.def("account_collect", &collect, py::arg("home") = py::none(), py::arg("project") = py::none(),
+        py::arg("threads") = 0u, "Brings a cluster project's finished experiment designs home (`collect --json`).");
   m.def("experiment_report", &experiment_report, py::arg("experiment"), py::arg("home") = py::none(),
         py::arg("project") = py::none(), "An experiment's report document, as `report --json` computes it.");
 }

@@ -79,6 +79,7 @@ json experiments_list(Call& call, const std::string& project) {
   json list = app::experiments_document(progress);
   for (std::size_t i = 0; i < progress.size(); ++i)
     list[i]["running_here"] = call.context.experiments.running_here(progress[i].experiment.id);
+  follow_running(call, project, progress);
   return list;
 }
 

@@ -49,4 +49,12 @@ void Routes::post_public(const std::string& pattern, RawRoute route) {
   server_.Post(pattern, [context = &context_, route = std::move(route)](const httplib::Request& q, httplib::Response& r) { answer(*context, q, r, true, false, route); });
 }
 
+void follow_running(Call& call, const std::string& project, const std::vector<app::ExperimentProgress>& experiments) {
+  for (const auto& e : experiments)
+    if (e.experiment.state == storage::DesignState::running && !call.context.experiments.running_here(e.experiment.id)) {
+      call.context.cluster_experiments.follow(call.user, project);
+      return;
+    }
+}
+
 }  // namespace sd::web

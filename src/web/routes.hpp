@@ -8,9 +8,11 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "app/background_designs.hpp"
 #include "app/background_experiments.hpp"
+#include "app/cluster_collector.hpp"
 #include "app/home.hpp"
 #include "storage/accounts.hpp"
 #include "web/password_slots.hpp"
@@ -25,8 +27,10 @@ struct WebContext {
   WebContext(std::filesystem::path home_folder, std::filesystem::path web_root_folder, storage::SignInPolicy policy,
              bool tls_proxy)
       : home(std::move(home_folder)), web_root(std::move(web_root_folder)), sign_in(policy), behind_tls(tls_proxy),
-        addresses(policy), passwords(kPasswordChecksAtOnce), designs("web"), experiments("webx") {}
+        addresses(policy), passwords(kPasswordChecksAtOnce), designs("web"), experiments("webx"),
+        cluster_experiments(home, kClusterCollectionInterval) {}
   static constexpr int kPasswordChecksAtOnce = 4;  // 256 MiB of Argon2id at most
+  static constexpr std::chrono::seconds kClusterCollectionInterval{20};
   std::filesystem::path home;
   std::filesystem::path web_root;  // the built front end (the report page's bundle)
   storage::SignInPolicy sign_in;
@@ -37,6 +41,7 @@ struct WebContext {
   RunRegistry runs;
   app::BackgroundDesigns designs;
   app::BackgroundExperiments experiments;
+  app::ClusterCollector cluster_experiments;  // the pages' reads only follow; it collects
 };
 
 /// One request being answered: its own connection to the home (SQLite connections are per
@@ -79,6 +84,10 @@ class Routes {
 
 /// A project name in a route pattern (storage/validation's rule for names).
 inline constexpr const char* kNamePattern = "([A-Za-z][A-Za-z0-9._-]{0,63})";
+
+/// A read that shows a running experiment asks the server's collector to follow its project: a
+/// cluster project's designs come home on the collector's ticker, never inside a request.
+void follow_running(Call& call, const std::string& project, const std::vector<app::ExperimentProgress>& experiments);
 
 void add_account_routes(Routes& routes);
 void add_software_routes(Routes& routes);

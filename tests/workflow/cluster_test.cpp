@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <thread>
 
@@ -276,8 +277,39 @@ TEST_F(cluster_projects, AnExperimentGoesAsOneJobArrayAndEndsAsTheLocalOneDoes) 
   cluster_project("array", this_host(), 1100);
   const std::string submitted = sd_ok({"experiment", "--file", protocol.string(), "--time", "5"});
   EXPECT_NE(submitted.find("3 of 3 designs submitted to Slurm as array job"), std::string::npos) << submitted;
-  const json done = follow([](const json& s) { return s["experiments"][0]["state"] == "finished"; }, 240s);
-  EXPECT_EQ(done["experiments"][0]["designs_done"], 3);
+  // Every task leaves its result in the array's folder (this machine is the cluster) ...
+  const auto folder_at = submitted.find("(folder ");
+  ASSERT_NE(folder_at, std::string::npos) << submitted;
+  const std::filesystem::path folder = submitted.substr(folder_at + 8, submitted.find(')', folder_at) - folder_at - 8);
+  const auto results = [&] {
+    int n = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(folder))
+      n += std::filesystem::exists(entry.path() / "result.json") ? 1 : 0;
+    return n;
+  };
+  for (const auto end = std::chrono::steady_clock::now() + 240s; results() < 3 && std::chrono::steady_clock::now() < end;)
+    std::this_thread::sleep_for(500ms);
+  ASSERT_EQ(results(), 3) << "the array's tasks never all wrote their results in " << folder;
+  // ... yet status only reads: polled, it brings nothing home and assesses nothing.
+  for (int poll = 0; poll < 3; ++poll) {
+    const json polled = status();
+    EXPECT_EQ(polled["experiments"][0]["state"], "running") << polled.dump(2);
+    EXPECT_EQ(polled["experiments"][0]["designs_done"], 0) << polled.dump(2);
+  }
+  EXPECT_NE(sd_ok({"status"}).find("swarmdesign collect"), std::string::npos);
+  // collect does, as the tasks end for Slurm.
+  json done;
+  int home = 0;
+  for (const auto end = std::chrono::steady_clock::now() + 120s; std::chrono::steady_clock::now() < end;) {
+    const json collected = json::parse(sd_ok({"collect", "--json"}));
+    home += collected["designs_home"].get<int>();
+    done = collected["progress"];
+    if (done[0]["state"] == "finished") break;
+    std::this_thread::sleep_for(500ms);
+  }
+  EXPECT_EQ(done[0]["state"], "finished") << done.dump(2);
+  EXPECT_EQ(done[0]["designs_done"], 3);
+  EXPECT_EQ(home, 3);
   const json there = json::parse(sd_ok({"report", "tiny", "--out", (scratch() / "there").string(), "--json"}));
   ASSERT_EQ(there["designs"].size(), here["designs"].size());
   for (std::size_t i = 0; i < here["designs"].size(); ++i) {

@@ -1,5 +1,6 @@
 #include "app/documents/experiments.hpp"
 
+#include "app/cluster_experiments.hpp"
 #include "app/experiment_job.hpp"
 #include "experiments/protocol.hpp"
 
@@ -45,6 +46,15 @@ nlohmann::json experiments_document(const std::vector<ExperimentProgress>& exper
     list.push_back(std::move(item));
   }
   return list;
+}
+
+nlohmann::json collection_document(const std::string& project, const ClusterCollection& collection,
+                                   const std::vector<ExperimentProgress>& experiments) {
+  return {{"project", project},
+          {"experiments", collection.experiments},
+          {"designs_home", collection.designs_home},
+          {"still_running", collection.still_running},
+          {"progress", experiments_document(experiments)}};
 }
 
 }  // namespace sd::app
