@@ -393,7 +393,7 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
     $('reality-result').textContent = 'assessing…';
     try {
       const doc = await api(`/api/projects/${encodeURIComponent(project)}/designs/${id}/assessment`,
-        { body: { spec: $('reality-spec').value, samples: $('reality-samples').value }, quiet: true });
+        { body: { pseudo_reality: $('reality-spec').value, samples: $('reality-samples').value }, quiet: true });
       if (realityShown === key) showAssessment(doc);
     } catch (err) {
       if (realityShown === key) $('reality-result').textContent = `refused: ${err.message}`;

@@ -249,7 +249,7 @@ StartedDesign SlurmJobs::start(Home& home, const storage::User& user, const Desi
   // The job script runs `design` on the cluster from the project's settings, which do not
   // carry a specification file there yet.
   if (!launch.design.pseudo_reality.empty())
-    throw InvalidRequest("--pseudo-realities: robust designs run in a local project or on a server; not yet as Slurm jobs");
+    throw InvalidRequest("--pseudo-reality: robust designs run in a local project or on a server; not yet as Slurm jobs");
   ClusterSubmission s = submit_cluster_design(home, user, launch.design, launch.slurm);
   StartedDesign out{s.project, s.design, s.resubmitted, std::nullopt, {}, std::nullopt, false, 0, s.job, s.where};
   return out;

@@ -48,7 +48,7 @@ std::filesystem::path design_assessment_file(const std::filesystem::path& folder
 nlohmann::json assess_design_folder(const std::filesystem::path& folder, const Mission& mission,
                                     const ControlSoftware& software, const std::string& label,
                                     const DesignAssessmentRequest& request, const FileScope& scope) {
-  const NamedPseudoReality named = field("spec", [&] { return load_requested_pseudo_reality(request.spec, scope); });
+  const NamedPseudoReality named = field("pseudo_reality", [&] { return load_requested_pseudo_reality(request.pseudo_reality, scope); });
   const std::vector<std::uint64_t> samples = field("samples", [&] { return parse_sample_range(request.samples); });
   const std::vector<std::uint64_t> seeds = field("seeds", [&] { return parse_seed_range(request.seeds); });
   const auto runs = static_cast<std::int64_t>(seeds.size()) * (1 + static_cast<std::int64_t>(samples.size()));
@@ -64,7 +64,7 @@ nlohmann::json assess_design_folder(const std::filesystem::path& folder, const M
   assess_request.seeds = seeds;
   assess_request.threads = request.threads;
   nlohmann::json document = assessment_document(assess(mission, assess_request));
-  document["request"] = {{"spec", request.spec}, {"samples", request.samples}, {"seeds", request.seeds}};
+  document["request"] = {{"pseudo_reality", request.pseudo_reality}, {"samples", request.samples}, {"seeds", request.seeds}};
   const std::lock_guard lock(write_mutex());
   replace_file_durably(design_assessment_file(folder), document.dump(1) + "\n", 0644, Umask::Applies);
   return document;

@@ -23,7 +23,7 @@ namespace sd::app {
 inline constexpr std::int64_t kMaxDesignAssessmentRuns = 20'000;
 
 struct DesignAssessmentRequest {
-  std::string spec;             // a shipped pseudo-reality's name or a specification file (read under scope)
+  std::string pseudo_reality;   // a shipped pseudo-reality's name or a specification file (read under scope)
   std::string samples = "1-20"; // "K" or "A-B"
   std::string seeds = "1-10";
   int threads = 0;

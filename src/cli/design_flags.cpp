@@ -29,11 +29,14 @@ void add_design_space_flags(CLI::App& command, DesignSpaceFlags& flags) {
 }
 
 void add_robust_design_flags(CLI::App& command, RobustDesignFlags& flags) {
-  command.add_option("--pseudo-realities", flags.pseudo_realities,
+  // One name per idea: --pseudo-reality, as assess, experiment and export-argos spell it.
+  // --pseudo-realities (the first spelling) stays an alias for one release.
+  command.add_option("--pseudo-reality,--pseudo-realities", flags.pseudo_realities,
                      "Design robust control software: race every candidate in samples of this pseudo-reality specification "
-                     "(a shipped name, see `swarmdesign pseudo-realities`, or a .json file) instead of the design model");
+                     "(a shipped name, see `swarmdesign pseudo-realities`, or a .json file) instead of the design model "
+                     "(--pseudo-realities: the old spelling, kept for one release)");
   command.add_option("--pseudo-reality-samples", flags.samples,
-                     "With --pseudo-realities: the samples the race's instances are, A-B (default 101-120, so that "
+                     "With --pseudo-reality: the samples the race's instances are, A-B (default 101-120, so that "
                      "assess's default samples 1-20 stay unseen)");
 }
 

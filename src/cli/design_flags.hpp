@@ -17,7 +17,7 @@ struct DesignSpaceFlags {
 
 void add_design_space_flags(CLI::App& command, DesignSpaceFlags& flags);
 
-/// A robust design's flags (design, run-design): --pseudo-realities SPEC and its samples.
+/// A robust design's flags (design, run-design): --pseudo-reality SPEC and its samples.
 struct RobustDesignFlags {
   std::string pseudo_realities, samples;
   bool any() const { return !pseudo_realities.empty() || !samples.empty(); }

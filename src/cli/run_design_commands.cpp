@@ -73,7 +73,7 @@ void run_design(const RunDesignOptions& o, int mpi_ranks) {
   launch.design.space = o.flags.request();
   launch.design.space_given = o.flags.any() || !o.seed.empty() || o.robust.any();
   if (!o.robust.samples.empty() && o.robust.pseudo_realities.empty())
-    throw UsageError("--pseudo-reality-samples needs --pseudo-realities SPEC");
+    throw UsageError("--pseudo-reality-samples needs --pseudo-reality SPEC");
   launch.design.pseudo_reality = o.robust.pseudo_realities;
   if (!o.robust.samples.empty()) launch.design.pseudo_reality_samples = o.robust.samples;
   if (!o.seed.empty()) launch.design.seed = app::parse_seed(o.seed);
@@ -152,11 +152,11 @@ CommandRegistrar registrar{40, [](CLI::App& app, Context& context) {
       "In a cluster project (new-project --cluster) the design is written as an sbatch script and\n"
       "submitted as a Slurm job, with the Slurm options above; status follows it, stop-design cancels\n"
       "it, and run-design submits an interrupted one again (it resumes from its last checkpoint).\n\n"
-      "With --pseudo-realities SPEC the race draws each instance as (seed, pseudo-reality sample), so it keeps\n"
+      "With --pseudo-reality SPEC the race draws each instance as (seed, pseudo-reality sample), so it keeps\n"
       "control software that holds across robot models (Ligot & Birattari 2020, one step further); assess it\n"
       "afterwards on samples it never saw (swarmdesign assess).\n\n"
       "Example:\n  swarmdesign run-design --fsm --chocolate --seed 1\n  swarmdesign run-design --detach\n"
-      "  swarmdesign run-design --pseudo-realities sampled-around --seed 1\n"
+      "  swarmdesign run-design --pseudo-reality sampled-around --seed 1\n"
       "  swarmdesign run-design --ntasks 64 --time 4:00:00 --partition batch   (cluster project)");
   add_slurm_flags(*cmd, run->job);
   cmd->callback([run, &context] { run_design(*run, context.mpi_ranks); });

@@ -64,4 +64,8 @@ void send_error(httplib::Response& response, const std::exception& error) {
   send_json(response, {{"error", error.what()}}, http_status(kind));
 }
 
+const char* alias_or(const nlohmann::json& body, const char* key, const char* old_key) {
+  return !body.contains(key) && body.contains(old_key) ? old_key : key;
+}
+
 }  // namespace sd::web

@@ -27,6 +27,9 @@ nlohmann::json read_json_body(const httplib::Request& request);
 /// A field of a JSON body as text (a whole number is taken as its digits: seeds, budgets);
 /// InvalidRequest naming the field when it is missing or of another type.
 std::string text_field(const nlohmann::json& body, const char* key);
+/// The field's name in `body`: `key`, or `old_key` when only that is there (a renamed field's
+/// first spelling, accepted for one release).
+const char* alias_or(const nlohmann::json& body, const char* key, const char* old_key);
 
 void send_json(httplib::Response& response, const nlohmann::json& body, int status = 200);
 /// {"error": "..."} with the status of the exception's kind; a failure of the server itself

@@ -50,11 +50,11 @@ app::ProjectDesignRequest design_request(const json& body) {
     if (!body.at("fresh").is_boolean()) throw app::InvalidRequest("fresh must be true or false");
     request.fresh = body.at("fresh").get<bool>();
   }
-  // A robust design (run-design --pseudo-realities): a shipped name or a file of the user's projects.
-  if (body.contains("pseudo_realities") && !body.at("pseudo_realities").is_null())
-    request.pseudo_reality = text_field(body, "pseudo_realities");
+  // A robust design (run-design --pseudo-reality): a shipped name or a file of the user's projects.
+  if (const char* key = alias_or(body, "pseudo_reality", "pseudo_realities"); body.contains(key) && !body.at(key).is_null())
+    request.pseudo_reality = text_field(body, key);
   if (body.contains("pseudo_reality_samples") && !body.at("pseudo_reality_samples").is_null()) {
-    if (request.pseudo_reality.empty()) throw app::InvalidRequest("pseudo_reality_samples needs pseudo_realities");
+    if (request.pseudo_reality.empty()) throw app::InvalidRequest("pseudo_reality_samples needs pseudo_reality");
     request.pseudo_reality_samples = text_field(body, "pseudo_reality_samples");
   }
   return request;
@@ -111,6 +111,7 @@ void add_project_routes(Routes& routes) {
     doc["experiments"] = app::experiments_document(experiments);
     for (std::size_t i = 0; i < experiments.size(); ++i)
       doc["experiments"][i]["running_here"] = call.context.experiments.running_here(experiments[i].experiment.id);
+    follow_running(call, call.match(1), experiments);
     return doc;
   });
 
@@ -174,7 +175,7 @@ void add_project_routes(Routes& routes) {
   // asked otherwise, kept as assessment.json in the design's folder (app/design_assessment).
   routes.post(project + "/designs/([0-9]{1,18})/assessment", [](Call& call) -> json {
     app::DesignAssessmentRequest request;
-    request.spec = text_field(call.body, "spec");
+    request.pseudo_reality = text_field(call.body, alias_or(call.body, "pseudo_reality", "spec"));
     if (call.body.contains("samples") && !call.body.at("samples").is_null()) request.samples = text_field(call.body, "samples");
     if (call.body.contains("seeds") && !call.body.at("seeds").is_null()) request.seeds = text_field(call.body, "seeds");
     return app::assess_project_design(call.home, call.user, call.match(1), design_number(call.match(2)), request,

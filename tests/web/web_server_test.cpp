@@ -1001,7 +1001,7 @@ TEST_F(WebServer, ADesignsBestIsAssessedInAPseudoRealityKeptInItsFolderAndShownT
   const std::string route = "/api/projects/r/designs/" + std::to_string(id) + "/assessment";
   EXPECT_EQ(alice_->get(route).status, 404) << "not assessed yet";
 
-  const Answer assessed = alice_->post(route, {{"spec", "sampled-around"}, {"samples", "1-3"}, {"seeds", "1-4"}});
+  const Answer assessed = alice_->post(route, {{"pseudo_reality", "sampled-around"}, {"samples", "1-3"}, {"seeds", "1-4"}});
   ASSERT_EQ(assessed.status, 200) << assessed.text;
   const json& software = assessed.body.at("software").at(0);
   EXPECT_EQ(assessed.body.at("samples").size(), 3u);
@@ -1024,14 +1024,16 @@ TEST_F(WebServer, ADesignsBestIsAssessedInAPseudoRealityKeptInItsFolderAndShownT
 
   // Bob reaches none of it; bad requests say which field is wrong; no CSRF token, no assessment.
   EXPECT_EQ(bob_->get(route).status, 404);
-  EXPECT_EQ(bob_->post(route, {{"spec", "sampled-around"}}).status, 404);
-  EXPECT_EQ(alice_->post(route, {{"spec", "sampled-around"}}, false).status, 403);
-  EXPECT_EQ(alice_->post("/api/projects/r/designs/999/assessment", {{"spec", "sampled-around"}}).status, 404);
-  expect_field_refused(alice_->post(route, {{"samples", "1-2"}}), "spec");
-  expect_field_refused(alice_->post(route, {{"spec", "no-such-world"}}), "spec");
-  expect_field_refused(alice_->post(route, {{"spec", "sampled-around"}, {"samples", "0"}}), "samples");
-  expect_field_refused(alice_->post(route, {{"spec", "sampled-around"}, {"seeds", "x"}}), "seeds");
-  expect_field_refused(alice_->post(route, {{"spec", "sampled-around"}, {"samples", "1-20"}, {"seeds", "1-1000"}}), "samples");
+  EXPECT_EQ(bob_->post(route, {{"pseudo_reality", "sampled-around"}}).status, 404);
+  EXPECT_EQ(alice_->post(route, {{"pseudo_reality", "sampled-around"}}, false).status, 403);
+  EXPECT_EQ(alice_->post("/api/projects/r/designs/999/assessment", {{"pseudo_reality", "sampled-around"}}).status, 404);
+  expect_field_refused(alice_->post(route, {{"samples", "1-2"}}), "pseudo_reality");
+  expect_field_refused(alice_->post(route, {{"pseudo_reality", "no-such-world"}}), "pseudo_reality");
+  // The field's first name still works for one release.
+  expect_field_refused(alice_->post(route, {{"spec", "no-such-world"}}), "pseudo_reality");
+  expect_field_refused(alice_->post(route, {{"pseudo_reality", "sampled-around"}, {"samples", "0"}}), "samples");
+  expect_field_refused(alice_->post(route, {{"pseudo_reality", "sampled-around"}, {"seeds", "x"}}), "seeds");
+  expect_field_refused(alice_->post(route, {{"pseudo_reality", "sampled-around"}, {"samples", "1-20"}, {"seeds", "1-1000"}}), "samples");
   EXPECT_EQ(alice_->get(route).body, assessed.body) << "a refused request leaves the last assessment";
 }
 
@@ -1045,19 +1047,20 @@ TEST_F(WebServer, ARobustDesignIsStartedWithItsPseudoRealitiesAndBadOnesAreRefus
     body.update(extra);
     return body;
   };
-  EXPECT_EQ(alice_->post("/api/projects/rb/designs", with({{"pseudo_realities", "no-such-world"}})).status, 400);
-  EXPECT_EQ(alice_->post("/api/projects/rb/designs", with({{"pseudo_realities", "sampled-around"}, {"pseudo_reality_samples", "0-2"}})).status, 400);
+  EXPECT_EQ(alice_->post("/api/projects/rb/designs", with({{"pseudo_reality", "no-such-world"}})).status, 400);
+  EXPECT_EQ(alice_->post("/api/projects/rb/designs", with({{"pseudo_reality", "sampled-around"}, {"pseudo_reality_samples", "0-2"}})).status, 400);
   EXPECT_EQ(alice_->post("/api/projects/rb/designs", with({{"pseudo_reality_samples", "1-2"}})).status, 400);
   // Another user's file is refused as any missing one, and names nothing of it.
   const auto bobs = root_ / "home" / "users" / "bob" / "world.json";
   std::filesystem::create_directories(bobs.parent_path());
   std::ofstream(bobs) << R"({"knobs": {"wheel_noise": 0.2}})";
-  const Answer outside = alice_->post("/api/projects/rb/designs", with({{"pseudo_realities", bobs.string()}}));
+  const Answer outside = alice_->post("/api/projects/rb/designs", with({{"pseudo_reality", bobs.string()}}));
   EXPECT_GE(outside.status, 400);
   EXPECT_LT(outside.status, 500);
   EXPECT_EQ(outside.text.find("wheel_noise"), std::string::npos);
   EXPECT_TRUE(alice_->get("/api/projects/rb/designs").body.empty()) << "nothing recorded for a refused request";
 
+  // Started with the field's first name (pseudo_realities), still accepted for one release.
   const Answer started = alice_->post("/api/projects/rb/designs", with({{"pseudo_realities", "sampled-around"}, {"pseudo_reality_samples", "101-103"}}));
   ASSERT_EQ(started.status, 200) << started.text;
   ASSERT_TRUE(wait_until([&] { return alice_->get("/api/projects/rb/status").body.at("design").at("state") == "finished"; },

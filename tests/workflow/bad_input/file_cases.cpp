@@ -56,7 +56,7 @@ const std::vector<std::pair<std::string, std::string>> kProtocols{
      "c"},
 };
 
-// Malformed pseudo-reality specifications (assess --pseudo-reality, design --pseudo-realities).
+// Malformed pseudo-reality specifications (assess --pseudo-reality, design --pseudo-reality).
 const std::vector<std::pair<std::string, std::string>> kPseudoRealities{
     {"", "line 1"},
     {"[]", "document: expected an object"},
@@ -161,7 +161,7 @@ std::vector<CliCase> file_cases(const Inputs& in) {
     const std::string file = numbered(in.files, "reality", i).string();
     cases.push_back({evaluate({"assess", "--mission", "aac", "--pseudo-reality", file}), "", 2, kPseudoRealities[i].second});
     cases.push_back({{"pseudo-realities", file}, "", 2, kPseudoRealities[i].second});
-    cases.push_back({{"design", "--mission", "aac", "--budget", "2000", "--fsm", "--chocolate", "--pseudo-realities", file,
+    cases.push_back({{"design", "--mission", "aac", "--budget", "2000", "--fsm", "--chocolate", "--pseudo-reality", file,
                       "--out", (in.scratch / "d").string()}, "", 2, kPseudoRealities[i].second});
   }
   for (const std::string& file : {std::string("/dev/zero"), (in.files / "absent.json").string()}) {
