@@ -95,6 +95,29 @@ PreparedDesign prepare_new_design(const NewDesignSettings& settings, const std::
   return d;
 }
 
+namespace {
+std::string settings_text(const PreparedDesign& d) {
+  std::string text = "mission " + d.mission_reference + ", budget " + std::to_string(d.options.max_experiments) + ", seed " +
+                     std::to_string(d.options.seed) + ", " + d.choice.architectures_text() + " / " + d.choice.flavours_text();
+  if (d.reality) text += ", pseudo-reality " + d.reality->reference + " samples " + d.reality_samples;
+  return text;
+}
+}  // namespace
+
+PreparedDesign prepare_design_in(const NewDesignSettings& settings, const std::filesystem::path& folder) {
+  if (folder.empty() || !std::filesystem::exists(storage::DesignStore::file_in(folder)))
+    return prepare_new_design(settings, folder);
+  const PreparedDesign asked = check_new_design(settings);
+  PreparedDesign stored = prepare_resume(folder, true, settings.files);
+  if (settings_text(stored) != settings_text(asked))
+    throw DesignFolderError("the design in " + stored.folder.string() + " was started with other settings (" +
+                            settings_text(stored) + "); resume it as it is with --resume " + stored.folder.string() +
+                            ", or design in another folder");
+  return stored;
+}
+
+bool already_finished(const PreparedDesign& d) { return d.restored && d.restored->phase == design::Phase::Finished; }
+
 PreparedDesign prepare_resume(const std::filesystem::path& folder, bool allow_finished, const FileScope& files) {
   PreparedDesign d;
   d.folder = std::filesystem::absolute(folder).lexically_normal();

@@ -69,6 +69,14 @@ PreparedDesign check_new_design(const NewDesignSettings& settings);
 /// check_new_design in a folder; DesignFolderError when it already holds a design.
 /// An empty folder means ./design-<mission>-seed<S> (with -2, -3 ... when taken).
 PreparedDesign prepare_new_design(const NewDesignSettings& settings, const std::filesystem::path& folder);
+/// The design in `folder` as asked, the rule every front end follows (`design --out DIR`,
+/// Python's design(folder=...)): a new one when the folder holds none; else the one it holds,
+/// resumed (or, finished, read back: run_design then only reports it) when it was started with
+/// these settings (mission, budget, seed, design space, pseudo-realities and their samples);
+/// else DesignFolderError naming the settings it was started with.
+PreparedDesign prepare_design_in(const NewDesignSettings& settings, const std::filesystem::path& folder);
+/// Whether a prepared design has nothing left to run (a finished one read back).
+bool already_finished(const PreparedDesign& d);
 /// DesignFolderError for a folder that is not a design, of another format or space, damaged,
 /// whose mission changed or whose runs this build would score differently, or (unless
 /// allow_finished) finished.

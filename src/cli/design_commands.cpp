@@ -33,7 +33,7 @@ void run_design_command(const DesignOptions& o) {
   if (!o.resume.empty()) {
     if (!o.mission.empty() || !o.budget.empty() || !o.seed.empty() || !o.out.empty() || o.flags.any() || o.robust.any())
       throw UsageError("--resume continues a design with the settings it was started with; give only --threads or --json with it");
-    prepared = app::prepare_resume(o.resume);
+    prepared = app::prepare_resume(o.resume, true);  // a finished one: its result, as run-design gives it
   } else {
     if (o.mission.empty()) throw UsageError("--mission is required (or --resume DIR)");
     if (o.budget.empty()) throw UsageError("--budget is required (or --resume DIR)");
@@ -43,14 +43,15 @@ void run_design_command(const DesignOptions& o) {
     settings.space = o.flags.request();
     settings.seed = o.seed.empty() ? app::random_seed() : app::parse_seed(o.seed);
     if (o.robust.samples.size() && o.robust.pseudo_realities.empty())
-      throw UsageError("--pseudo-reality-samples needs --pseudo-realities SPEC");
+      throw UsageError("--pseudo-reality-samples needs --pseudo-reality SPEC");
     settings.pseudo_reality = o.robust.pseudo_realities;
     if (!o.robust.samples.empty()) settings.pseudo_reality_samples = o.robust.samples;
-    prepared = app::prepare_new_design(settings, o.out);
+    prepared = app::prepare_design_in(settings, o.out);
   }
   for (const auto& note : prepared.choice.notes) std::cerr << "swarmdesign: note: " << note << "\n";
   if (!o.json)
-    std::cout << (prepared.resuming ? "Resuming the design in " : "Designing in ") << prepared.folder.string()
+    std::cout << (app::already_finished(prepared) ? "The design in " + prepared.folder.string() + " has already finished"
+                  : (prepared.resuming ? "Resuming the design in " : "Designing in ") + prepared.folder.string())
               << " (mission " << prepared.mission.name << ", budget " << prepared.options.max_experiments
               << ", seed " << prepared.options.seed
               << (prepared.reality ? ", robust: pseudo-realities " + prepared.reality->reference + " samples " + prepared.reality_samples : "")
@@ -83,7 +84,7 @@ void register_design(CLI::App& app) {
       "exactly as if it had never stopped.\n\n"
       "Example:\n  swarmdesign design --mission aac --budget 20000 --fsm --chocolate --seed 1 --out aac-1\n"
       "  swarmdesign design --resume aac-1\n"
-      "  swarmdesign design --mission aac --budget 20000 --fsm --chocolate --pseudo-realities sampled-around --out aac-robust");
+      "  swarmdesign design --mission aac --budget 20000 --fsm --chocolate --pseudo-reality sampled-around --out aac-robust");
   cmd->callback([o] { run_design_command(*o); });
 }
 

@@ -94,21 +94,8 @@ py::object design(const std::string& mission, long long budget, const std::vecto
   settings.budget = budget;
   settings.space = space_request(architectures, flavours);
   settings.seed = seed;
-  if (!folder.empty() && std::filesystem::exists(storage::DesignStore::file_in(folder))) {
-    // The folder holds a design already: go on with it, provided it is the one asked for.
-    const app::PreparedDesign asked = app::check_new_design(settings);
-    app::PreparedDesign stored = app::prepare_resume(folder, true);
-    if (stored.mission_reference != asked.mission_reference || stored.options.max_experiments != asked.options.max_experiments ||
-        stored.options.seed != asked.options.seed || stored.choice.architectures_text() != asked.choice.architectures_text() ||
-        stored.choice.flavours_text() != asked.choice.flavours_text())
-      throw storage::DesignFolderError("the design in " + folder + " was started with other settings (mission " +
-                                       stored.mission_reference + ", budget " + std::to_string(stored.options.max_experiments) +
-                                       ", seed " + std::to_string(stored.options.seed) + ", " +
-                                       stored.choice.architectures_text() + " / " + stored.choice.flavours_text() +
-                                       "); resume it with resume_design() or open it with Design.open()");
-    return run_prepared(stored, threads, progress);
-  }
-  app::PreparedDesign prepared = app::prepare_new_design(settings, folder);
+  // A folder that holds this design already goes on with it (app::prepare_design_in's rule).
+  app::PreparedDesign prepared = app::prepare_design_in(settings, folder);
   return run_prepared(prepared, threads, progress);
 }
 

@@ -2,7 +2,9 @@
 // string of any flavour, read by the CLI's one parser) as Python objects.
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -60,15 +62,18 @@ void bind_missions_and_software(py::module_& m) {
         "Every module of the five flavours with its id, name, flavour and parameter domains.");
 
   py::class_<Mission, std::shared_ptr<Mission>>(m, "Mission", "A mission: arena, swarm, start, duration and objective.")
-      .def_static("load", [](const std::string& path) {
+      // Paths as str or os.PathLike (pathlib.Path), as evaluate, trace and design take them.
+      .def_static("load", [](const std::filesystem::path& file) {
             // A path, always: "aac.json" or "missions/aac.json", never a catalogue name.
+            const std::string path = file.string();
             return load(is_mission_file(path) ? path : "./" + path);
           }, py::arg("path"), "A mission file, checked as `--mission FILE` checks it (at most 1 MiB, a regular file).")
       .def_static("builtin", [](const std::string& name) {
             if (is_mission_file(name)) throw MissionLoadError("unknown mission '" + name + "' (see `swarmdesign missions`)");
             return load(name);
           }, py::arg("name"), "A mission of the catalogue by name (see swarmdesign.missions()).")
-      .def_static("named", &load, py::arg("name_or_path"), "A catalogue name or a file, as `--mission` reads it.")
+      .def_static("named", [](const std::filesystem::path& name_or_path) { return load(name_or_path.string()); },
+                  py::arg("name_or_path"), "A catalogue name or a file, as `--mission` reads it.")
       .def_static("from_json", [](const std::string& text, const std::string& source) {
             return std::make_shared<Mission>(parse_mission(text, source));
           }, py::arg("text"), py::arg("source") = "<python>", "A mission from the text of a mission file.")

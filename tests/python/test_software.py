@@ -30,6 +30,9 @@ def test_mission_load_reads_files_only(tmp_path):
     source = tmp_path / "mine.json"
     source.write_text(sd.Mission.builtin("aac").text)
     assert sd.Mission.load(str(source)).digest == sd.Mission.builtin("aac").digest
+    # A pathlib.Path, as evaluate, trace and design take one (issue #54).
+    assert sd.Mission.load(source).digest == sd.Mission.builtin("aac").digest
+    assert sd.Mission.named(source).digest == sd.Mission.builtin("aac").digest
     with pytest.raises(sd.MissionError):
         sd.Mission.load("aac")  # ./aac: no such file, never the catalogue's aac
     with pytest.raises(sd.MissionError):

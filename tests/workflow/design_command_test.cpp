@@ -86,9 +86,15 @@ TEST_F(design_command, FoldersThatHoldNoResumableDesignAreRefused) {
   expect_error(run({"design", "--resume", foreign.string()}), 1, "not a SwarmDesign design database");
 
   const auto finished = scratch() / "finished";
-  run_ok(design_args("finished", 1100, 5, 2));
-  expect_error(run({"design", "--resume", finished.string()}), 1, "has already finished");
-  expect_error(run(design_args("finished", 1100, 5, 2)), 1, "already holds a design");
+  const std::string made = run_ok(design_args("finished", 1100, 5, 2));
+  // A finished design asked for again answers as run-design does (issue #54): its result, exit
+  // 0, whether resumed by folder or asked with the settings it was made with; the same design.
+  const std::string resumed = run_ok({"design", "--resume", finished.string(), "--json"});
+  EXPECT_EQ(design_outcome(resumed), design_outcome(made));
+  auto again = design_args("finished", 1100, 5, 2);
+  std::erase(again, std::string("--json"));
+  EXPECT_NE(run_ok(again).find("has already finished"), std::string::npos);
+  expect_error(run(design_args("finished", 1100, 6, 2)), 1, "was started with other settings (mission ");
 
   storage::Database(finished / "design.db").execute("UPDATE meta SET value = '99' WHERE key = 'format_version'");
   expect_error(run({"design", "--resume", finished.string()}), 1, "format version 99");
