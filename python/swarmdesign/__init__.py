@@ -568,7 +568,8 @@ class ExperimentReport:
 class Account:
     """A SwarmDesign home as the signed-in user sees it (``swarmdesign sign-in`` made the
     session): projects, their designs and experiments, reports. It only reads, through the
-    store every CLI command opens (collect is its one step that works: it reaches the cluster).
+    store every CLI command opens; test_design, compare_designs and collect run simulations
+    (collect also reaches the cluster).
     home: the SwarmDesign home (None: $SWARMDESIGN_HOME or the
     default)."""
 
@@ -598,6 +599,31 @@ class Account:
         """Brings a cluster project's finished experiment designs home and assesses them, as
         ``swarmdesign collect --json`` does: what came home, and the experiments' progress."""
         return _core.account_collect(self.home, project, threads)
+
+    def test_design(self, design: Optional[int] = None, software: Optional[SoftwareLike] = None,
+                    seeds: str = "1-10", project: Optional[str] = None, threads: int = 0) -> Any:
+        """A design's best on its own mission (design None: the project's last design with a
+        best), or ``software`` on the project's mission, on fresh seeds: the document
+        ``swarmdesign test-design --json`` prints and the web's Test answers."""
+        if design is not None and software is not None:
+            raise InvalidRequestError("give design or software to test, not both")
+        return _core.account_test_design(self.home, project, None if design is None else _integer(design, "design"),
+                                         None if software is None else _software(software), seeds, threads)
+
+    def compare_designs(self, a: int, b: int, seeds: str = "1-20", project: Optional[str] = None,
+                        threads: int = 0) -> Any:
+        """Two designs' bests on the same seeds with the Wilcoxon signed-rank test paired by
+        seed: ``swarmdesign compare-designs A B --json``'s document (the web's Compare)."""
+        return _core.account_compare_designs(self.home, project, _integer(a, "a"), _integer(b, "b"), seeds, threads)
+
+    def argos_files(self, design: Optional[int] = None, pseudo_reality: Optional[str] = None,
+                    sample: Optional[int] = None, project: Optional[str] = None) -> Any:
+        """A design's mission as an ARGoS experiment file (``experiment``: its text) and the
+        line that runs its best: ``swarmdesign export-argos --json``'s document. With
+        pseudo_reality and sample, the mission in that pseudo-reality sample."""
+        return _core.account_argos_files(self.home, project, None if design is None else _integer(design, "design"),
+                                         "" if pseudo_reality is None else os.fspath(pseudo_reality),
+                                         "" if sample is None else str(_integer(sample, "sample")))
 
     def experiment_report(self, experiment: str, project: Optional[str] = None) -> ExperimentReport:
         """The experiment's report as ``swarmdesign report --json`` computes it."""

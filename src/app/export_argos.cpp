@@ -6,6 +6,7 @@
 #include "app/errors.hpp"
 #include "app/inputs.hpp"
 #include "app/pseudo_realities.hpp"
+#include "app/test_design.hpp"
 #include "app/user_files.hpp"
 #include "core/durable_file.hpp"
 
@@ -48,23 +49,29 @@ nlohmann::json argos_export_document(const ArgosExportLine& line) {
   return {{"config", line.result.text}, {"flavour", flavour_name(line.result.flavour)}, {"reader", line.result.reader}};
 }
 
-argos::Experiment export_mission(const MissionExportRequest& request) {
-  if (request.out.empty()) throw InvalidRequest("--out: give the .argos file to write");
-  const std::string& tag = request.options.controller_tag;
+argos::Experiment mission_experiment(Mission mission, const argos::ExperimentOptions& options,
+                                     const std::string& pseudo_reality, const std::string& sample, const FileScope& scope) {
+  const std::string& tag = options.controller_tag;
   if (tag != "automode_controller" && tag != "automode_controller_bt")
     throw InvalidRequest("--controller: automode_controller or automode_controller_bt, not '" + tag + "'");
-  Mission mission = load_requested_mission(request.mission);
-  if (request.pseudo_reality.empty() != request.sample.empty())
+  if (pseudo_reality.empty() != sample.empty())
     throw InvalidRequest("--pseudo-reality and --sample go together: the specification and which of its samples");
-  if (!request.pseudo_reality.empty()) {
-    const std::vector<std::uint64_t> sample = parse_sample_range(request.sample);
-    if (sample.size() != 1) throw InvalidRequest("--sample: one sample number, not a range");
-    mission = in_pseudo_reality(mission, load_requested_pseudo_reality(request.pseudo_reality).spec, sample.front());
+  if (!pseudo_reality.empty()) {
+    const std::vector<std::uint64_t> k = parse_sample_range(sample);
+    if (k.size() != 1) throw InvalidRequest("--sample: one sample number, not a range");
+    mission = in_pseudo_reality(mission, load_requested_pseudo_reality(pseudo_reality, scope).spec, k.front());
   }
-  argos::Experiment experiment = argos::argos_experiment(mission, request.options);
+  argos::Experiment experiment = argos::argos_experiment(mission, options);
   if (mission.robot.has_deviations())
     experiment.notes.push_back("this pseudo-reality's per-robot deviations (each robot's own gains) have no ARGoS "
                                "attribute: the file gives every e-puck the sample's noise, not its deviations");
+  return experiment;
+}
+
+argos::Experiment export_mission(const MissionExportRequest& request) {
+  if (request.out.empty()) throw InvalidRequest("--out: give the .argos file to write");
+  const argos::Experiment experiment = mission_experiment(load_requested_mission(request.mission), request.options,
+                                                          request.pseudo_reality, request.sample);
   // A kill while writing leaves the old file or the new one, never half an experiment.
   try {
     replace_file_durably(request.out, experiment.xml, 0644, Umask::Applies);
@@ -72,6 +79,31 @@ argos::Experiment export_mission(const MissionExportRequest& request) {
     throw std::runtime_error("cannot write " + request.out.string() + ": " + e.code().message());
   }
   return experiment;
+}
+
+nlohmann::json argos_files(Home& home, const storage::User& user, const ArgosFilesRequest& request, const FileScope& scope) {
+  const TestTarget target = test_target(home, user, request.project, request.software, request.design, scope);
+  argos::ExperimentOptions options;
+  if (target.software.architecture == Architecture::BehaviourTree) options.controller_tag = "automode_controller_bt";
+  const argos::Experiment experiment = mission_experiment(target.mission, options, request.pseudo_reality, request.sample, scope);
+  const ArgosExportLine line = try_export_control_software(target.software);
+  const std::string file = target.mission.name + ".argos";
+  nlohmann::json doc = {{"design", target.design_id ? nlohmann::json(*target.design_id) : nlohmann::json()},
+                        {"control_software", target.configuration},
+                        {"argos", argos_export_document(line)},
+                        {"file_name", file},
+                        {"experiment", experiment.xml},
+                        {"notes", experiment.notes},
+                        {"loop_functions_dir", options.loop_functions_dir},
+                        {"automode_library", options.automode_library},
+                        {"pseudo_reality", request.pseudo_reality.empty() ? nlohmann::json()
+                                               : nlohmann::json{{"reference", request.pseudo_reality}, {"sample", request.sample}}}};
+  // As the file's own comment says: no visualisation, a seed, the control software last.
+  if (line.exported) {
+    const bool bt = line.result.reader.find("automode_main_bt") != std::string::npos;
+    doc["command"] = std::string(bt ? "automode_main_bt" : "automode_main") + " -n -c " + file + " --seed 1 " + line.result.text;
+  }
+  return doc;
 }
 
 }  // namespace sd::app

@@ -1,5 +1,6 @@
 #include "app/project_design.hpp"
 
+
 #include <nlohmann/json.hpp>
 
 #include "app/errors.hpp"
@@ -152,58 +153,6 @@ void hand_over(ProjectDesign& d, const std::string& new_owner) {
   Home home(d.home);
   storage::Designs(home.workspace(), d.project).set_owner(d.design.id, new_owner);
   d.design.owner = new_owner;
-}
-
-namespace {
-
-/// Fills target.software and .mission for target.project: the given software, or the best of
-/// design `design`, or of the last finished design.
-void complete_target(TestTarget& target, Home& home, const std::optional<ControlSoftware>& given,
-                     std::optional<std::int64_t> design, const FileScope& scope) {
-  const storage::Project& project = target.project;
-  if (!project.mission)
-    throw NotFound("project " + project.name + " has no mission; choose one with: swarmdesign set-mission");
-  if (given) {
-    target.software = *given;
-    target.configuration = to_config_string(*given);
-  } else {
-    const auto designs = storage::Designs(home.workspace(), project).list();
-    const auto chosen = std::find_if(designs.rbegin(), designs.rend(), [&](const auto& d) {
-      return design ? d.id == *design : d.best_config.has_value();
-    });
-    if (chosen == designs.rend())
-      throw NotFound(design ? "project " + project.name + " has no design " + std::to_string(*design)
-                            : "project " + project.name +
-                                  " has no finished design yet: give the control software (--fsm-config ...) to test");
-    if (!chosen->best_config)
-      throw NotFound("design " + std::to_string(chosen->id) + " has no best control software yet");
-    target.design_id = chosen->id;
-    target.software = parse_control_software(*chosen->best_config);
-    target.configuration = *chosen->best_config;
-  }
-  try {
-    target.mission = load_requested_mission(*project.mission, scope);
-  } catch (const InvalidRequest& e) {
-    throw NotFound("the mission of project " + project.name + " cannot be loaded: " + e.what());
-  }
-}
-
-}  // namespace
-
-TestTarget test_target(Home& home, const storage::User& user, const std::optional<ControlSoftware>& given) {
-  TestTarget target;
-  target.project = storage::Projects(home.workspace(), user).require_active();
-  complete_target(target, home, given, std::nullopt, FileScope::local());
-  return target;
-}
-
-TestTarget test_target(Home& home, const storage::User& user, const std::string& project,
-                       const std::optional<ControlSoftware>& given, std::optional<std::int64_t> design,
-                       const FileScope& scope) {
-  TestTarget target;
-  target.project = storage::Projects(home.workspace(), user).get(project);
-  complete_target(target, home, given, design, scope);
-  return target;
 }
 
 }  // namespace sd::app

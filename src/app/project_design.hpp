@@ -65,21 +65,4 @@ DesignOutcome run_project_design(ProjectDesign& design, const DesignRunOptions& 
 /// parent records the child as owner; the child sets design.owner to the same text itself.
 void hand_over(ProjectDesign& design, const std::string& new_owner);
 
-/// What test-design scores: the given control software, or the best of the project's last
-/// finished design, on the project's mission.
-struct TestTarget {
-  storage::Project project;
-  Mission mission;
-  ControlSoftware software;
-  std::optional<std::int64_t> design_id;  // when it is a design's best
-  std::string configuration;              // its configuration string
-};
-TestTarget test_target(Home& home, const storage::User& user, const std::optional<ControlSoftware>& given);
-/// The same for one of the user's projects by name (the web page): the given software, or the
-/// best of design `design` (NotFound unless it is the project's and has one), or of its last
-/// finished design, on the project's mission read under `scope`.
-TestTarget test_target(Home& home, const storage::User& user, const std::string& project,
-                       const std::optional<ControlSoftware>& given, std::optional<std::int64_t> design,
-                       const FileScope& scope);
-
 }  // namespace sd::app

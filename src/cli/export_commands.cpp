@@ -2,13 +2,16 @@
 // ARGoS experiment files (mission export-argos). The work is app/export_argos.hpp's.
 #include <CLI/CLI.hpp>
 
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
+#include "app/accounts.hpp"
 #include "app/export_argos.hpp"
 #include "cli/command_registry.hpp"
 #include "cli/control_software_input.hpp"
 #include "cli/export_display.hpp"
+#include "core/durable_file.hpp"
 
 namespace sd::cli {
 
@@ -76,6 +79,36 @@ void export_mission(const MissionExportOptions& o) {
   std::cout << ")\nRun it with: automode_main -n -c " << o.out << " --seed 1 --fsm-config ...\n";
 }
 
+struct DesignExportOptions {
+  std::string project, out, pseudo_reality, sample;
+  std::int64_t design = 0;
+  bool json = false;
+};
+
+void export_design(const DesignExportOptions& o) {
+  app::ArgosFilesRequest request;
+  if (!o.project.empty()) request.project = o.project;
+  if (o.design > 0) request.design = o.design;
+  request.pseudo_reality = o.pseudo_reality;
+  request.sample = o.sample;
+  app::Home home;
+  const nlohmann::json files = app::argos_files(home, app::signed_in_user(home), request);
+  const std::filesystem::path out = o.out.empty() ? files["file_name"].get<std::string>() : o.out;
+  // A kill while writing leaves the old file or the new one, never half an experiment.
+  replace_file_durably(out, files["experiment"].get<std::string>(), 0644, Umask::Applies);
+  for (const auto& note : files["notes"]) std::cerr << "swarmdesign: note: " << note.get<std::string>() << "\n";
+  if (o.json) {
+    std::cout << files.dump(2) << "\n";
+    return;
+  }
+  std::cout << "Wrote " << out.string() << ": design " << files["design"] << "'s mission"
+            << (o.sample.empty() ? "" : " in sample " + o.sample + " of " + o.pseudo_reality) << "\n";
+  if (files.contains("command"))
+    std::cout << "Run its best with:\n  " << files["command"].get<std::string>() << "\n";
+  else
+    std::cout << "Its best has no ARGoS3-AutoMoDe string: " << files["argos"]["refused"].get<std::string>() << "\n";
+}
+
 const CommandRegistrar registrar{12, [](CLI::App& app, Context& context) {
   auto o = std::make_shared<ExportOptions>();
   auto* cmd = app.add_subcommand("export", "Print control software as the AutoMoDe tool chain reads it");
@@ -119,6 +152,24 @@ const CommandRegistrar registrar{12, [](CLI::App& app, Context& context) {
       "      --automode-library ~/ARGoS3-AutoMoDe/build/src/libautomode.so\n"
       "  swarmdesign mission export-argos aac --out aac-pr3.argos --pseudo-reality sampled-around --sample 3");
   argos->callback([m] { export_mission(*m); });
+
+  auto d = std::make_shared<DesignExportOptions>();
+  auto* design = app.add_subcommand("export-argos", "Write a design's mission as an ARGoS experiment file, with the line that runs its best");
+  design->add_option("--design", d->design, "This design (default: the project's last design with a best)")
+      ->check(CLI::PositiveNumber);
+  design->add_option("--project", d->project, "The design's project (default: the active one)");
+  design->add_option("--out", d->out, "The .argos file to write (default: ./MISSION.argos)");
+  design->add_option("--pseudo-reality", d->pseudo_reality,
+                     "Write a pseudo-reality's noise instead of the design model's: a shipped specification or a .json file");
+  design->add_option("--sample", d->sample, "With --pseudo-reality: which sample (1, 2, ...)");
+  design->add_flag("--json", d->json, "Print one JSON document (the web's ARGoS files give the same)");
+  design->footer(
+      "The design's own mission (the one it was made for) as mission export-argos writes it, and the\n"
+      "automode_main command line that runs the design's best in it. With --pseudo-reality and --sample,\n"
+      "the same sample of robot model the simulator runs (the reality gap's second step, in ARGoS).\n\n"
+      "Example:\n  swarmdesign export-argos --design 2 --out aac.argos\n"
+      "  swarmdesign export-argos --pseudo-reality sampled-around --sample 3 --json");
+  design->callback([d] { export_design(*d); });
 }};
 
 }  // namespace

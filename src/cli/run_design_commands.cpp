@@ -10,17 +10,13 @@
 #include "app/accounts.hpp"
 #include "app/design_backends.hpp"
 #include "app/documents.hpp"
-#include "app/evaluation_job.hpp"
 #include "app/inputs.hpp"
 #include "app/local_processes.hpp"
 #include "app/project_design.hpp"
 #include "app/projects.hpp"
 #include "cli/command_registry.hpp"
-#include "cli/control_software_input.hpp"
 #include "cli/design_display.hpp"
 #include "cli/design_flags.hpp"
-#include "cli/export_display.hpp"
-#include "cli/score_output.hpp"
 #include "cli/slurm_flags.hpp"
 #include "control/config_string.hpp"
 
@@ -107,28 +103,6 @@ void run_design(const RunDesignOptions& o, int mpi_ranks) {
             << "  its log:   " << (started->design.folder / "design.log").string() << "\n";
 }
 
-struct TestDesignOptions {
-  std::string seeds = "1-10";
-  int threads = 0;
-  bool json = false, argos = false;
-  ControlSoftwareOptions software;
-};
-
-void test_design(const TestDesignOptions& o, const Context& context) {
-  const std::vector<std::uint64_t> seeds = app::parse_seed_range(o.seeds);
-  if (o.argos && o.json)
-    throw UsageError("--argos prints a text line; leave out --json (or use: swarmdesign export --argos --json)");
-  std::optional<ControlSoftware> given;
-  if (context.has_control_software() || !o.software.config_file.empty()) given = read_control_software(context, o.software);
-  app::Home home;
-  const app::TestTarget target = app::test_target(home, app::signed_in_user(home), given);
-  if (target.design_id && !o.json)
-    std::cout << "Testing the best control software of design " << *target.design_id << ":\n  " << target.configuration
-              << "\n";
-  if (o.argos) print_argos_line(target.software, "  ", "");
-  score_and_print(target.mission, target.software, seeds, o.threads, o.json);
-}
-
 CommandRegistrar registrar{40, [](CLI::App& app, Context& context) {
   auto run = std::make_shared<RunDesignOptions>();
   auto* cmd = app.add_subcommand("run-design", "Run a design for the active project (its mission and budget)");
@@ -160,22 +134,6 @@ CommandRegistrar registrar{40, [](CLI::App& app, Context& context) {
       "  swarmdesign run-design --ntasks 64 --time 4:00:00 --partition batch   (cluster project)");
   add_slurm_flags(*cmd, run->job);
   cmd->callback([run, &context] { run_design(*run, context.mpi_ranks); });
-
-  auto test = std::make_shared<TestDesignOptions>();
-  auto* tcmd = app.add_subcommand("test-design", "Evaluate control software on the active project's mission");
-  tcmd->alias("testDesign");
-  tcmd->add_option("--seeds", test->seeds, "Seeds A-B to evaluate on (default 1-10)");
-  tcmd->add_option("--threads", test->threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
-  tcmd->add_flag("--json", test->json, "Print one JSON document");
-  tcmd->add_flag("--argos", test->argos, "Also print the control software as ARGoS3-AutoMoDe reads it (export --argos)");
-  add_control_software_options(*tcmd, test->software);
-  tcmd->footer(
-      "Without control software, tests the best control software of the project's last finished design.\n"
-      "The control software ends the command line.\n\n"
-      "Example:\n  swarmdesign test-design --seeds 1-20\n"
-      "  swarmdesign test-design --seeds 1-20 --fsm-config --nstates 1 --s0 10 --rwm0 50\n"
-      "  swarmdesign test-design --argos");
-  tcmd->callback([test, &context] { test_design(*test, context); });
 }};
 
 }  // namespace

@@ -14,8 +14,10 @@
 #include "app/cluster_experiments.hpp"
 #include "app/experiment_job.hpp"
 #include "app/experiment_report.hpp"
+#include "app/export_argos.hpp"
 #include "app/home.hpp"
 #include "app/projects.hpp"
+#include "app/test_design.hpp"
 #include "python/bindings.hpp"
 #include "python/json_objects.hpp"
 #include "storage/designs.hpp"
@@ -62,6 +64,41 @@ py::object collect(const std::optional<std::string>& home_folder, const std::opt
   return to_python(app::collection_document(p.name, c, app::experiments_progress(*home, user, p.name)));
 }
 
+// A design's best on fresh seeds, two designs compared, a design for ARGoS: the services the
+// CLI's test-design, compare-designs and export-argos and the web's /test, /compare and /argos
+// call (app/test_design, app/export_argos), so the documents are the same.
+py::object test_design(const std::optional<std::string>& home_folder, const std::optional<std::string>& project,
+                       std::optional<std::int64_t> design, const std::optional<ControlSoftware>& software,
+                       const std::string& seeds, int threads) {
+  auto home = open_home(home_folder);
+  const storage::User user = app::signed_in_user(*home);
+  app::TestDesignRequest request{project, design, software, seeds, threads, {}};
+  const nlohmann::json doc = [&] {
+    py::gil_scoped_release free;
+    return app::test_design(*home, user, request);
+  }();
+  return to_python(doc);
+}
+
+py::object compare_designs(const std::optional<std::string>& home_folder, const std::optional<std::string>& project,
+                           std::int64_t a, std::int64_t b, const std::string& seeds, int threads) {
+  auto home = open_home(home_folder);
+  const storage::User user = app::signed_in_user(*home);
+  app::CompareDesignsRequest request{project, a, b, seeds, threads, {}};
+  const nlohmann::json doc = [&] {
+    py::gil_scoped_release free;
+    return app::compare_designs(*home, user, request);
+  }();
+  return to_python(doc);
+}
+
+py::object argos_files(const std::optional<std::string>& home_folder, const std::optional<std::string>& project,
+                       std::optional<std::int64_t> design, const std::string& pseudo_reality, const std::string& sample) {
+  auto home = open_home(home_folder);
+  app::ArgosFilesRequest request{project, design, std::nullopt, pseudo_reality, sample};
+  return to_python(app::argos_files(*home, app::signed_in_user(*home), request));
+}
+
 py::object experiment_report(const std::string& experiment, const std::optional<std::string>& home_folder,
                              const std::optional<std::string>& project) {
   auto home = open_home(home_folder);
@@ -78,6 +115,12 @@ void bind_accounts(py::module_& m) {
         "A project's experiments and how far each is.");
   m.def("account_collect", &collect, py::arg("home") = py::none(), py::arg("project") = py::none(),
         py::arg("threads") = 0u, "Brings a cluster project's finished experiment designs home (`collect --json`).");
+  m.def("account_test_design", &test_design, py::arg("home"), py::arg("project"), py::arg("design"), py::arg("software"),
+        py::arg("seeds"), py::arg("threads"), "A design's best (or software) on fresh seeds (`test-design --json`).");
+  m.def("account_compare_designs", &compare_designs, py::arg("home"), py::arg("project"), py::arg("a"), py::arg("b"),
+        py::arg("seeds"), py::arg("threads"), "Two designs' bests on the same seeds (`compare-designs --json`).");
+  m.def("account_argos_files", &argos_files, py::arg("home"), py::arg("project"), py::arg("design"),
+        py::arg("pseudo_reality"), py::arg("sample"), "A design for ARGoS3-AutoMoDe (`export-argos --json`).");
   m.def("experiment_report", &experiment_report, py::arg("experiment"), py::arg("home") = py::none(),
         py::arg("project") = py::none(), "An experiment's report document, as `report --json` computes it.");
 }

@@ -6,17 +6,15 @@
 #include "app/design_backends.hpp"
 #include "app/documents.hpp"
 #include "app/errors.hpp"
-#include "app/evaluation_job.hpp"
 #include "app/experiment_job.hpp"
 #include "app/export_argos.hpp"
 #include "app/inputs.hpp"
 #include "app/project_design.hpp"
+#include "app/test_design.hpp"
 #include "app/projects.hpp"
 #include "app/saved_software.hpp"
 #include "control/config_string.hpp"
 #include "design/design_space.hpp"
-#include "statistics/descriptive.hpp"
-#include "statistics/signed_rank.hpp"
 #include "storage/designs.hpp"
 #include "web/http_io.hpp"
 #include "web/routes.hpp"
@@ -26,9 +24,6 @@ namespace sd::web {
 namespace {
 
 using nlohmann::json;
-
-constexpr std::size_t kMaxTestSeeds = 100;
-constexpr double kMaxTestRobotTicks = 100'000'000.0;  // 100 seeds of 20 robots for 5 000 s
 
 storage::Project project_of(Call& call) {
   return storage::Projects(call.home.workspace(), call.user).get(call.match(1));
@@ -60,21 +55,6 @@ app::ProjectDesignRequest design_request(const json& body) {
   return request;
 }
 
-/// The seeds a page may ask to test on.
-std::vector<std::uint64_t> test_seeds(const std::string& text) {
-  std::vector<std::uint64_t> seeds = app::parse_seed_range(text);
-  if (seeds.size() > kMaxTestSeeds)
-    throw app::InvalidRequest("seeds " + text + ": at most " + std::to_string(kMaxTestSeeds) + " seeds from the page");
-  return seeds;
-}
-
-/// A request holds a server thread: bounded like an Exec run, per simulation.
-void require_page_sized(const Mission& mission, std::size_t runs) {
-  if (static_cast<double>(mission.robots) * mission.ticks * static_cast<double>(runs) > kMaxTestRobotTicks)
-    throw app::InvalidRequest("the mission is too long to test on " + std::to_string(runs) +
-                              " runs from the page: use swarmdesign test-design");
-}
-
 /// A design's number as a route or query gives it.
 std::int64_t design_number(const std::string& text) {
   std::int64_t id = 0;
@@ -82,6 +62,13 @@ std::int64_t design_number(const std::string& text) {
   if (error != std::errc() || end != text.data() + text.size() || id <= 0)
     throw app::InvalidRequest("design '" + text + "' must be a design's number");
   return id;
+}
+
+/// The body's "design": a design's number, or absent/null for none.
+std::optional<std::int64_t> optional_design(const json& body) {
+  if (!body.contains("design") || body.at("design").is_null()) return std::nullopt;
+  if (!body.at("design").is_number_integer()) throw app::InvalidRequest("design must be a design's number");
+  return body.at("design").get<std::int64_t>();
 }
 
 }  // namespace
@@ -151,23 +138,14 @@ void add_project_routes(Routes& routes) {
   // test-design from the page: a design's best (or the control software sent) on fresh seeds,
   // scored as the CLI scores it.
   routes.post(project + "/test", [](Call& call) {
-    std::optional<std::int64_t> design;
-    if (call.body.contains("design") && !call.body.at("design").is_null()) {
-      if (!call.body.at("design").is_number_integer()) throw app::InvalidRequest("design must be a design's number");
-      design = call.body.at("design").get<std::int64_t>();
-    }
-    const std::string seeds_text = call.body.contains("seeds") ? text_field(call.body, "seeds") : "1-10";
-    const std::vector<std::uint64_t> seeds = test_seeds(seeds_text);
-    std::optional<ControlSoftware> given;
-    if (call.body.contains("text") && !call.body.at("text").is_null()) given = parse_control_software(text_field(call.body, "text"));
-    const app::TestTarget target = app::test_target(call.home, call.user, call.match(1), given, design,
-                                                    app::FileScope::own_projects(call.home, call.user));
-    require_page_sized(target.mission, seeds.size());
-    const std::vector<double> scores = app::score_seeds(target.mission, target.software, seeds);
-    json doc = app::scores_document(target.mission, target.software, seeds, scores);
-    doc["design"] = target.design_id ? json(*target.design_id) : json();
-    if (scores.size() > 1) doc["sd"] = statistics::sample_standard_deviation(scores);
-    return doc;
+    app::TestDesignRequest request;
+    request.project = call.match(1);
+    request.design = optional_design(call.body);
+    if (call.body.contains("seeds")) request.seeds = text_field(call.body, "seeds");
+    if (call.body.contains("text") && !call.body.at("text").is_null())
+      request.software = parse_control_software(text_field(call.body, "text"));
+    return app::test_design(call.home, call.user, request, app::FileScope::own_projects(call.home, call.user),
+                            app::TestLimits::page());
   });
 
   // A design's best across the reality gap (issue #46): assessed in a pseudo-reality (a shipped
@@ -187,67 +165,31 @@ void add_project_routes(Routes& routes) {
 
   // Two designs' bests on the same fresh seeds, with the paired test an experiment's report uses.
   routes.post(project + "/compare", [](Call& call) -> json {
-    if (!call.body.contains("designs") || !call.body.at("designs").is_array() || call.body.at("designs").size() != 2)
+    const json& designs = call.body.contains("designs") ? call.body.at("designs") : json();
+    if (!designs.is_array() || designs.size() != 2 || !designs[0].is_number_integer() || !designs[1].is_number_integer())
       throw app::InvalidRequest("designs must be two designs' numbers");
-    const std::string seeds_text = call.body.contains("seeds") ? text_field(call.body, "seeds") : "1-20";
-    const std::vector<std::uint64_t> seeds = test_seeds(seeds_text);
-    json sides = json::array();
-    std::vector<std::vector<double>> scores;
-    for (const json& id : call.body.at("designs")) {
-      if (!id.is_number_integer()) throw app::InvalidRequest("designs must be two designs' numbers");
-      const app::TestTarget target = app::test_target(call.home, call.user, call.match(1), std::nullopt,
-                                                      id.get<std::int64_t>(), app::FileScope::own_projects(call.home, call.user));
-      require_page_sized(target.mission, 2 * seeds.size());
-      scores.push_back(app::score_seeds(target.mission, target.software, seeds));
-      json side = app::scores_document(target.mission, target.software, seeds, scores.back());
-      side["design"] = id;
-      if (seeds.size() > 1) side["sd"] = statistics::sample_standard_deviation(scores.back());
-      sides.push_back(std::move(side));
-    }
-    json test = {{"test", "Wilcoxon signed-rank, paired by seed"}, {"p_value", 1.0}, {"estimate", 0.0}};
-    try {
-      const statistics::SignedRankTest t = statistics::wilcoxon_signed_rank(scores[0], scores[1]);
-      test["p_value"] = t.p_value;
-      test["estimate"] = t.estimate;
-      test["statistic"] = t.statistic;
-    } catch (const std::invalid_argument&) {
-      test["note"] = "every seed scores the same: nothing to tell them apart";
-    }
-    return {{"seeds", seeds_text}, {"designs", sides}, {"wilcoxon", test}};
+    app::CompareDesignsRequest request;
+    request.project = call.match(1);
+    request.a = designs[0].get<std::int64_t>();
+    request.b = designs[1].get<std::int64_t>();
+    if (call.body.contains("seeds")) request.seeds = text_field(call.body, "seeds");
+    return app::compare_designs(call.home, call.user, request, app::FileScope::own_projects(call.home, call.user),
+                                app::TestLimits::page());
   });
 
   // A design's best for ARGoS3-AutoMoDe, as `export --argos` and `mission export-argos` give it:
   // the project's mission as an experiment file and the one-digit string its code base reads.
   // The control software sent (the best the page shows), else design ID's best, as for /test.
   routes.post(project + "/argos", [](Call& call) -> json {
-    std::optional<std::int64_t> design;
-    if (call.body.contains("design") && !call.body.at("design").is_null()) {
-      if (!call.body.at("design").is_number_integer()) throw app::InvalidRequest("design must be a design's number");
-      design = call.body.at("design").get<std::int64_t>();
-    }
-    std::optional<ControlSoftware> given;
-    if (call.body.contains("text") && !call.body.at("text").is_null()) given = parse_control_software(text_field(call.body, "text"));
-    const app::TestTarget target = app::test_target(call.home, call.user, call.match(1), given, design,
-                                                    app::FileScope::own_projects(call.home, call.user));
-    argos::ExperimentOptions options;
-    if (target.software.architecture == Architecture::BehaviourTree) options.controller_tag = "automode_controller_bt";
-    const argos::Experiment experiment = argos::argos_experiment(target.mission, options);
-    const app::ArgosExportLine line = app::try_export_control_software(target.software);
-    const std::string file = target.mission.name + ".argos";
-    json doc = {{"design", target.design_id ? json(*target.design_id) : json()},
-                {"control_software", target.configuration},
-                {"argos", app::argos_export_document(line)},
-                {"file_name", file},
-                {"experiment", experiment.xml},
-                {"notes", experiment.notes},
-                {"loop_functions_dir", options.loop_functions_dir},
-                {"automode_library", options.automode_library}};
-    // As the file's own comment says: no visualisation, a seed, the control software last.
-    if (line.exported) {
-      const bool bt = line.result.reader.find("automode_main_bt") != std::string::npos;
-      doc["command"] = std::string(bt ? "automode_main_bt" : "automode_main") + " -n -c " + file + " --seed 1 " + line.result.text;
-    }
-    return doc;
+    app::ArgosFilesRequest request;
+    request.project = call.match(1);
+    request.design = optional_design(call.body);
+    if (call.body.contains("text") && !call.body.at("text").is_null())
+      request.software = parse_control_software(text_field(call.body, "text"));
+    if (call.body.contains("pseudo_reality") && !call.body.at("pseudo_reality").is_null())
+      request.pseudo_reality = text_field(call.body, "pseudo_reality");
+    if (call.body.contains("sample") && !call.body.at("sample").is_null()) request.sample = text_field(call.body, "sample");
+    return app::argos_files(call.home, call.user, request, app::FileScope::own_projects(call.home, call.user));
   });
 
   routes.get(project + "/software", [](Call& call) {

@@ -1,0 +1,69 @@
+"""One core, three thin front ends (issue #54): Python's Account answers test_design,
+compare_designs, argos_files and collect with the very documents the CLI's --json prints (the
+web's API gives them too: tests/workflow/front_ends_test.cpp), because all three call the same
+application service."""
+
+import json
+import re
+import subprocess
+
+import pytest
+
+import swarmdesign as sd
+from conftest import BINARY, run_cli
+
+
+def cli_with_input(*args, text):
+    process = subprocess.run([str(BINARY), *map(str, args)], input=text, capture_output=True, text=True, timeout=120)
+    assert process.returncode == 0, process.stderr
+    return process.stdout
+
+
+@pytest.fixture(scope="module")
+def account(isolated_home):
+    """A signed-in user whose project holds two finished designs of a 2-second mission."""
+    if not BINARY.exists():
+        pytest.skip(f"no swarmdesign binary at {BINARY}")
+    cli_with_input("sign-up", "py-front", "--password-stdin", text="py-front-secret\n")
+    cli_with_input("sign-in", "py-front", "--password-stdin", text="py-front-secret\n")
+    run_cli("new-project", "fe")
+    run_cli("select-project", "fe")
+    folder = isolated_home / "users" / "py-front" / "projects" / "fe"
+    mission = folder / "aac-short.json"
+    mission.write_text(re.sub(r'"duration": *[0-9.]+', '"duration": 2', sd.Mission.builtin("aac").text))
+    run_cli("set-mission", mission)
+    run_cli("set-budget", "1100")
+    for seed in (1, 2):
+        run_cli("run-design", "--fsm", "--chocolate", "--seed", seed, "--threads", "2")
+    return sd.Account()
+
+
+def test_testing_a_design_is_the_clis_document(account):
+    assert account.test_design(1, seeds="3-6") == json.loads(run_cli("test-design", "--design", 1, "--seeds", "3-6", "--json"))
+    given = "--fsm-config --nstates 1 --s0 10 --rwm0 50"
+    assert account.test_design(software=given, seeds="1-2") == json.loads(
+        run_cli("test-design", "--seeds", "1-2", "--json", *given.split()))
+    with pytest.raises(sd.InvalidRequestError):
+        account.test_design(1, software=given)
+
+
+def test_comparing_two_designs_is_the_clis_document(account):
+    document = account.compare_designs(1, 2, seeds="1-8")
+    assert document == json.loads(run_cli("compare-designs", 1, 2, "--seeds", "1-8", "--json"))
+    assert [side["design"] for side in document["designs"]] == [1, 2]
+    with pytest.raises(sd.NotFoundError):
+        account.compare_designs(1, 9)
+
+
+def test_a_design_for_argos_is_the_clis_document(account, tmp_path):
+    document = account.argos_files(2, pseudo_reality="sampled-around", sample=3)
+    assert document == json.loads(run_cli("export-argos", "--design", 2, "--pseudo-reality", "sampled-around",
+                                          "--sample", 3, "--out", tmp_path / "x.argos", "--json"))
+    assert document["pseudo_reality"] == {"reference": "sampled-around", "sample": "3"}
+
+
+def test_collecting_a_local_project_brings_nothing_and_lists_its_experiments(account):
+    document = account.collect()
+    assert document == json.loads(run_cli("collect", "--json"))
+    assert document["experiments"] == 0 and document["designs_home"] == 0
+    assert document["progress"] == account.experiments()

@@ -1,0 +1,90 @@
+// One core, three thin front ends (issue #54): the same request gives the same document, bit
+// for bit, from the CLI's --json and from the web's API, because both only parse and call the
+// application layer's service (app/test_design, app/export_argos). Python's side of the same
+// comparison is tests/python/test_front_ends.py.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "web/web_client.hpp"
+#include "workflow/design_helpers.hpp"
+#include "workflow/workflow_fixture.hpp"
+
+namespace sd::test {
+namespace {
+
+using nlohmann::json;
+
+class front_ends : public WorkflowTest {
+ protected:
+  void SetUp() override {
+    WorkflowTest::SetUp();
+    user_with_active_project("ada", "p");
+    // In the project's own folder: the web reads a user's mission files only there.
+    const auto mission = write_short_mission(home() / "users" / "ada" / "projects" / "p", 2);
+    run_ok({"set-mission", mission.string()});
+    run_ok({"set-budget", "1100"});
+    run_ok({"run-design", "--fsm", "--chocolate", "--seed", "1", "--threads", "2"});
+    run_ok({"run-design", "--fsm", "--chocolate", "--seed", "2", "--threads", "2"});
+    server_.emplace(home());
+    browser_.emplace(server_->port());
+    ASSERT_TRUE(browser_->sign_in("ada", "ada-secret-pw")) << browser_->last_refusal();
+  }
+  void TearDown() override {
+    browser_.reset();
+    server_.reset();
+    WorkflowTest::TearDown();
+  }
+  json web(const std::string& route, const json& body) {
+    const Answer answer = browser_->post("/api/projects/p/" + route, body);
+    EXPECT_EQ(answer.status, 200) << answer.text;
+    return answer.body;
+  }
+
+  std::optional<RunningServer> server_;
+  std::optional<WebClient> browser_;
+};
+
+TEST_F(front_ends, TestingADesignGivesOneDocumentFromTheCliAndTheWeb) {
+  const json cli = json::parse(run_ok({"test-design", "--design", "1", "--seeds", "3-6", "--json"}));
+  EXPECT_EQ(cli, web("test", {{"design", 1}, {"seeds", "3-6"}}));
+  EXPECT_EQ(cli["design"], 1);
+  EXPECT_EQ(cli["runs"].size(), 4u);
+  // The default: the last design with a best.
+  EXPECT_EQ(json::parse(run_ok({"test-design", "--seeds", "1-2", "--json"})), web("test", {{"seeds", "1-2"}}));
+}
+
+TEST_F(front_ends, ComparingTwoDesignsGivesOneDocumentFromTheCliAndTheWeb) {
+  const json cli = json::parse(run_ok({"compare-designs", "1", "2", "--seeds", "1-8", "--json"}));
+  EXPECT_EQ(cli, web("compare", {{"designs", {1, 2}}, {"seeds", "1-8"}}));
+  ASSERT_EQ(cli["designs"].size(), 2u);
+  EXPECT_EQ(cli["designs"][0]["design"], 1);
+  EXPECT_EQ(cli["designs"][1]["design"], 2);
+  EXPECT_EQ(cli["wilcoxon"]["test"], "Wilcoxon signed-rank, paired by seed");
+  // Each side is what test-design gives for that design on those seeds.
+  EXPECT_EQ(cli["designs"][1], json::parse(run_ok({"test-design", "--design", "2", "--seeds", "1-8", "--json"})));
+  // The text says the same.
+  const std::string text = run_ok({"compare-designs", "1", "2", "--seeds", "1-8"});
+  EXPECT_NE(text.find("Wilcoxon signed-rank, paired by seed"), std::string::npos) << text;
+  expect_error(run({"compare-designs", "1", "9"}), 1, "has no design 9");
+}
+
+TEST_F(front_ends, ADesignForArgosIsOneDocumentFromTheCliAndTheWebAndItsFileIsWritten) {
+  const auto out = scratch() / "p.argos";
+  const json cli = json::parse(run_ok({"export-argos", "--design", "2", "--out", out.string(), "--pseudo-reality",
+                                       "sampled-around", "--sample", "3", "--json"}));
+  EXPECT_EQ(cli, web("argos", {{"design", 2}, {"pseudo_reality", "sampled-around"}, {"sample", "3"}}));
+  std::stringstream written;
+  written << std::ifstream(out).rdbuf();
+  EXPECT_EQ(written.str(), cli["experiment"].get<std::string>());
+  EXPECT_EQ(cli["pseudo_reality"]["sample"], "3");
+  // The sample is the one the simulator runs: its noise differs from the design model's file.
+  EXPECT_NE(cli["experiment"], web("argos", {{"design", 2}})["experiment"]);
+  EXPECT_EQ(json::parse(run_ok({"export-argos", "--design", "2", "--out", out.string(), "--json"})),
+            web("argos", {{"design", 2}}));
+}
+
+}  // namespace
+}  // namespace sd::test
