@@ -5,6 +5,7 @@
 #include "storage/passwords.hpp"
 #include "storage/session_file.hpp"
 #include "storage/sessions.hpp"
+#include "storage/sodium.hpp"
 #include "storage/validation.hpp"
 
 namespace sd::app {
@@ -113,5 +114,10 @@ storage::User user_of_session(Home& home, const std::string& token) {
 }
 
 void close_session(Home& home, const std::string& token) { storage::end_session(home.workspace().database(), token); }
+
+void ready_sign_ins() {
+  storage::ensure_sodium();
+  storage::dummy_password_hash();
+}
 
 }  // namespace sd::app

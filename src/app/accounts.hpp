@@ -2,6 +2,7 @@
 // Accounts and sessions as the application offers them. A terminal keeps its session token in
 // the home's session file (sign_in_here); a web server keeps it in a cookie (open_session,
 // user_of_session). Passwords are only ever stored as Argon2id hashes (storage/passwords).
+#include <chrono>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -9,6 +10,7 @@
 
 #include "app/home.hpp"
 #include "storage/accounts.hpp"
+#include "storage/sessions.hpp"
 #include "storage/sign_in_attempts.hpp"
 
 namespace sd::app {
@@ -52,5 +54,11 @@ std::string open_session(Home& home, const std::string& name, const std::string&
                          const storage::SignInPolicy& policy = {});
 storage::User user_of_session(Home& home, const std::string& token);
 void close_session(Home& home, const std::string& token);
+/// How long a session lasts (a server's cookie lasts as long).
+inline constexpr std::chrono::seconds kSessionLifetime = storage::kSessionLifetime;
+
+/// A server's start: libsodium ready for its keys and tokens, and the dummy password hash made
+/// (a sign-in of an unknown name checks against it, so it costs what a known name's does).
+void ready_sign_ins();
 
 }  // namespace sd::app

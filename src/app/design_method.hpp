@@ -81,4 +81,9 @@ class DesignMethod {
 /// The method of that name (design/methods.hpp); InvalidRequest for a name it does not have.
 const DesignMethod& design_method(std::string_view name);
 
+/// What a design folder holds, whichever method made it (Python's Design.open reads it):
+/// {"folder", "method", and "progress", "race_log", "convergence" for Iterated F-Race, or
+/// "document", "convergence" for EvoStick}. A damaged or foreign folder: DesignFolderError.
+nlohmann::json design_folder_document(const std::filesystem::path& folder);
+
 }  // namespace sd::app

@@ -1,6 +1,8 @@
 // The registry of design methods: every name of design/methods.hpp with its implementation.
 #include "app/design_method.hpp"
+#include "app/documents.hpp"
 #include "app/errors.hpp"
+#include "storage/design_store.hpp"
 
 namespace sd::app {
 
@@ -12,6 +14,22 @@ const DesignMethod& design_method(std::string_view name) {
   for (const DesignMethod* method : kRegistry)
     if (method->info().name == name) return *method;
   throw InvalidRequest("unknown design method '" + std::string(name) + "' (" + design::method_names_text() + ")");
+}
+
+nlohmann::json design_folder_document(const std::filesystem::path& folder) {
+  nlohmann::json out = {{"folder", std::filesystem::absolute(folder).lexically_normal().string()}};
+  if (!std::filesystem::exists(storage::DesignStore::file_in(folder)) && std::filesystem::exists(folder / "evostick.json")) {
+    const DesignMethod& method = design_method(design::kEvoStick.name);
+    out["method"] = std::string(design::kEvoStick.name);
+    out["document"] = method.document(folder);
+    out["convergence"] = convergence_document(method.convergence(folder));
+    return out;
+  }
+  out["method"] = std::string(design::kAutoMoDe.name);
+  out["progress"] = stored_progress_document(storage::read_design_progress(folder));
+  out["race_log"] = race_log_document(storage::read_race_log(folder));
+  out["convergence"] = convergence_document(storage::read_convergence(folder));
+  return out;
 }
 
 }  // namespace sd::app

@@ -305,4 +305,10 @@ std::vector<ExperimentProgress> experiments_progress(Home& home, const storage::
   }
   return all;
 }
+experiments::Protocol stored_protocol(Home& home, const storage::User& user, const std::optional<std::string>& project,
+                                      const std::string& name) {
+  const storage::Project p = project_or_active(home, user, project);
+  return experiments::protocol_from_json(nlohmann::json::parse(storage::Experiments(home.workspace(), p).get(name).protocol));
+}
+
 }  // namespace sd::app

@@ -137,4 +137,9 @@ struct ExperimentProgress {
 std::vector<ExperimentProgress> experiments_progress(Home& home, const storage::User& user,
                                                      const std::optional<std::string>& project = std::nullopt);
 
+/// The protocol experiment `name` of the project was started with (it resumes with that one);
+/// NotFound naming the experiments the project has.
+experiments::Protocol stored_protocol(Home& home, const storage::User& user, const std::optional<std::string>& project,
+                                      const std::string& name);
+
 }  // namespace sd::app

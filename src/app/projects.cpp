@@ -27,6 +27,10 @@ std::vector<storage::Project> list_projects(Home& home, const storage::User& use
   return storage::Projects(home.workspace(), user).list();
 }
 
+std::vector<storage::Design> list_designs(Home& home, const storage::User& user, const std::optional<std::string>& project) {
+  return storage::Designs(home.workspace(), project_or_active(home, user, project)).list();
+}
+
 storage::Project select_project(Home& home, const storage::User& user, const std::string& name) {
   require(storage::project_name_problem(name));
   return storage::Projects(home.workspace(), user).select(name);

@@ -9,6 +9,7 @@
 
 #include "app/home.hpp"
 #include "app/user_files.hpp"
+#include "storage/designs.hpp"
 #include "storage/projects.hpp"
 
 namespace sd::app {
@@ -23,6 +24,8 @@ struct ClusterRequest {
 storage::Project create_project(Home& home, const storage::User& user, const std::string& name,
                                 const std::optional<ClusterRequest>& cluster);
 std::vector<storage::Project> list_projects(Home& home, const storage::User& user);
+/// The project's designs (the active project when nullopt), oldest first.
+std::vector<storage::Design> list_designs(Home& home, const storage::User& user, const std::optional<std::string>& project);
 storage::Project select_project(Home& home, const storage::User& user, const std::string& name);
 /// Deletes the project, its designs, experiments and files, once `confirmation` repeats its
 /// name (InvalidRequest otherwise); Conflict while one of its designs or experiments runs.

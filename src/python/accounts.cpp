@@ -20,7 +20,6 @@
 #include "app/test_design.hpp"
 #include "python/bindings.hpp"
 #include "python/json_objects.hpp"
-#include "storage/designs.hpp"
 
 namespace sd::python {
 
@@ -41,9 +40,8 @@ py::object projects(const std::optional<std::string>& home_folder) {
 py::object designs(const std::optional<std::string>& home_folder, const std::optional<std::string>& project) {
   auto home = open_home(home_folder);
   const storage::User user = app::signed_in_user(*home);
-  const storage::Project p = app::project_or_active(*home, user, project);
   py::list out;
-  for (const storage::Design& d : storage::Designs(home->workspace(), p).list()) out.append(to_python(app::design_row_document(d)));
+  for (const storage::Design& d : app::list_designs(*home, user, project)) out.append(to_python(app::design_row_document(d)));
   return out;
 }
 

@@ -17,13 +17,10 @@
 #include "app/documents.hpp"
 #include "app/errors.hpp"
 #include "app/inputs.hpp"
-#include "design/methods.hpp"
 #include "missions/catalogue.hpp"
 #include "python/bindings.hpp"
 #include "python/interruptible.hpp"
 #include "python/json_objects.hpp"
-#include "storage/design_status.hpp"
-#include "storage/design_store.hpp"
 
 namespace sd::python {
 
@@ -104,23 +101,7 @@ py::object resume_design(const std::string& folder, unsigned threads, const py::
   return run_prepared(prepared, threads, progress);
 }
 
-py::dict read_design(const std::string& folder) {
-  py::dict out;
-  out["folder"] = std::filesystem::absolute(folder).lexically_normal().string();
-  const std::filesystem::path evolution = std::filesystem::path(folder) / "evostick.json";
-  if (!std::filesystem::exists(storage::DesignStore::file_in(folder)) && std::filesystem::exists(evolution)) {
-    const app::DesignMethod& method = app::design_method(design::kEvoStick.name);
-    out["method"] = std::string(design::kEvoStick.name);
-    out["document"] = to_python(method.document(folder));
-    out["convergence"] = to_python(app::convergence_document(method.convergence(folder)));
-    return out;
-  }
-  out["method"] = std::string(design::kAutoMoDe.name);
-  out["progress"] = to_python(app::stored_progress_document(storage::read_design_progress(folder)));
-  out["race_log"] = to_python(app::race_log_document(storage::read_race_log(folder)));
-  out["convergence"] = to_python(app::convergence_document(storage::read_convergence(folder)));
-  return out;
-}
+py::object read_design(const std::string& folder) { return to_python(app::design_folder_document(folder)); }
 
 }  // namespace
 

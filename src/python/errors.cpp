@@ -20,7 +20,6 @@
 #include "export/legacy_string.hpp"
 #include "missions/mission.hpp"
 #include "python/bindings.hpp"
-#include "storage/errors.hpp"
 
 namespace sd::python {
 
@@ -105,13 +104,13 @@ void bind_errors(py::module_& module) {
       set_error(k.config, e.what());
     } catch (const argos::ExportRefused& e) {
       set_error(k.export_refused, e.what());
-    } catch (const storage::NotFound& e) {
+    } catch (const app::NotFound& e) {
       set_error(k.not_found, e.what());
-    } catch (const storage::Conflict& e) {
+    } catch (const app::Conflict& e) {
       set_error(k.conflict, e.what());
-    } catch (const storage::AccessDenied& e) {
+    } catch (const app::AccessDenied& e) {
       set_error(k.access_denied, e.what());
-    } catch (const storage::DesignFolderError& e) {
+    } catch (const app::DesignFolderError& e) {
       set_error(k.design_folder, e.what());
     } catch (const std::exception& e) {
       const app::ErrorKind kind = app::classify(e);

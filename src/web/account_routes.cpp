@@ -3,7 +3,6 @@
 
 #include "app/accounts.hpp"
 #include "app/errors.hpp"
-#include "storage/sessions.hpp"
 #include "web/host_check.hpp"
 #include "web/http_io.hpp"
 #include "web/routes.hpp"
@@ -37,19 +36,19 @@ void add_account_routes(Routes& routes) {
     // is refused without a check.
     const PasswordSlots::Held slot = call.context.passwords.take();
     if (const std::int64_t wait = call.context.addresses.locked_for(address); wait > 0)
-      throw storage::TooManyAttempts("too many failed sign-ins from your address: try again in " +
+      throw app::TooManyAttempts("too many failed sign-ins from your address: try again in " +
                                          std::to_string(wait) + " s",
                                      wait);
     std::string token;
     try {
       token = app::open_session(call.home, name, text_field(call.body, "password"), call.context.sign_in);
-    } catch (const storage::AccessDenied&) {  // the same words and work for an unknown name
+    } catch (const app::AccessDenied&) {  // the same words and work for an unknown name
       call.context.addresses.failed(address);
       throw HttpError(401, "wrong user name or password");
     }
     call.context.addresses.succeeded(address);
     call.response.set_header("Set-Cookie",
-                             SessionGuard::session_cookie(token, static_cast<long>(storage::kSessionLifetime.count()),
+                             SessionGuard::session_cookie(token, static_cast<long>(app::kSessionLifetime.count()),
                                                           call.context.behind_tls));
     send_json(call.response, {{"user", name}, {"csrf", call.context.guard.csrf_token(token)}});
   });

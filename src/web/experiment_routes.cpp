@@ -9,8 +9,6 @@
 #include "app/inputs.hpp"
 #include "app/user_files.hpp"
 #include "experiments/protocol.hpp"
-#include "storage/experiments.hpp"
-#include "storage/projects.hpp"
 #include "app/experiment_report.hpp"
 #include "web/http_io.hpp"
 #include "web/routes.hpp"
@@ -130,10 +128,8 @@ void add_experiment_routes(Routes& routes) {
 
   // An interrupted experiment goes on with the protocol it was started with.
   routes.post(project + "/experiments/" + kNamePattern + "/resume", [](Call& call) -> json {
-    const storage::Project p = storage::Projects(call.home.workspace(), call.user).get(call.match(1));
-    const storage::Experiment e = storage::Experiments(call.home.workspace(), p).get(call.match(2));
-    const app::PlannedExperiment plan = planned(call, experiments::protocol_from_json(json::parse(e.protocol)));
-    return started_document(call, plan, call.context.experiments.start(call.home, call.user, plan, p.name));
+    const app::PlannedExperiment plan = planned(call, app::stored_protocol(call.home, call.user, call.match(1), call.match(2)));
+    return started_document(call, plan, call.context.experiments.start(call.home, call.user, plan, call.match(1)));
   });
 
   routes.get_raw(project + "/experiments/" + kNamePattern + "/report", [](Call& call) {

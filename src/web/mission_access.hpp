@@ -6,7 +6,7 @@
 
 #include "app/home.hpp"
 #include "missions/mission.hpp"
-#include "storage/accounts.hpp"
+#include "app/accounts.hpp"
 
 namespace sd::web {
 

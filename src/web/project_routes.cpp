@@ -4,6 +4,7 @@
 
 #include "app/design_assessment.hpp"
 #include "app/design_backends.hpp"
+#include "app/design_spaces.hpp"
 #include "app/documents.hpp"
 #include "app/errors.hpp"
 #include "app/experiment_job.hpp"
@@ -14,8 +15,6 @@
 #include "app/projects.hpp"
 #include "app/saved_software.hpp"
 #include "control/config_string.hpp"
-#include "design/design_space.hpp"
-#include "storage/designs.hpp"
 #include "web/http_io.hpp"
 #include "web/routes.hpp"
 
@@ -25,19 +24,12 @@ namespace {
 
 using nlohmann::json;
 
-storage::Project project_of(Call& call) {
-  return storage::Projects(call.home.workspace(), call.user).get(call.match(1));
-}
 
 app::ProjectDesignRequest design_request(const json& body) {
   app::ProjectDesignRequest request;
   const std::string architectures = body.contains("architectures") ? text_field(body, "architectures") : "";
   const std::string flavours = body.contains("flavours") ? text_field(body, "flavours") : "";
-  try {
-    request.space = design::request_from_text(architectures, flavours);
-  } catch (const std::invalid_argument& e) {
-    throw app::InvalidRequest(e.what());
-  }
+  request.space = app::design_space_request(architectures, flavours);
   request.space_given = !architectures.empty() || !flavours.empty();
   if (body.contains("seed") && !body.at("seed").is_null()) request.seed = app::parse_seed(text_field(body, "seed"));
   if (body.contains("fresh") && !body.at("fresh").is_null()) {
@@ -104,7 +96,7 @@ void add_project_routes(Routes& routes) {
 
   routes.get(project + "/designs", [](Call& call) {
     json list = json::array();
-    auto designs = storage::Designs(call.home.workspace(), project_of(call)).list();
+    const auto designs = app::list_designs(call.home, call.user, call.match(1));
     for (auto it = designs.rbegin(); it != designs.rend(); ++it) list.push_back(app::design_row_document(*it));
     return list;
   });

@@ -14,7 +14,7 @@
 #include "app/background_experiments.hpp"
 #include "app/cluster_collector.hpp"
 #include "app/home.hpp"
-#include "storage/accounts.hpp"
+#include "app/accounts.hpp"
 #include "web/password_slots.hpp"
 #include "web/run_registry.hpp"
 #include "web/session_guard.hpp"

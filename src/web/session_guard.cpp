@@ -5,13 +5,12 @@
 #include <array>
 
 #include "app/accounts.hpp"
-#include "storage/sodium.hpp"
 #include "web/http_io.hpp"
 
 namespace sd::web {
 
 SessionGuard::SessionGuard() {
-  storage::ensure_sodium();
+  app::ready_sign_ins();
   key_.resize(crypto_generichash_KEYBYTES);
   randombytes_buf(key_.data(), key_.size());
 }
@@ -39,7 +38,7 @@ storage::User SessionGuard::require_user(const httplib::Request& request, app::H
   if (!token) throw HttpError(401, "sign in first: this request has no session");
   try {
     return app::user_of_session(home, *token);
-  } catch (const storage::AccessDenied&) {
+  } catch (const app::AccessDenied&) {
     throw HttpError(401, "the session has expired or was ended: sign in again");
   }
 }

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "app/home.hpp"
-#include "storage/accounts.hpp"
+#include "app/accounts.hpp"
 
 namespace sd::web {
 

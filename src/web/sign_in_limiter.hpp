@@ -9,7 +9,7 @@
 #include <mutex>
 #include <string>
 
-#include "storage/sign_in_attempts.hpp"
+#include "app/accounts.hpp"
 
 namespace sd::web {
 

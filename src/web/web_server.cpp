@@ -6,7 +6,6 @@
 
 #include <stdexcept>
 
-#include "storage/passwords.hpp"
 #include "web/http_io.hpp"
 #include "web/routes.hpp"
 
@@ -45,7 +44,7 @@ WebServer::WebServer(WebServerOptions options)
     return httplib::Server::HandlerResponse::Handled;
   });
   // The first unknown name's check would otherwise also pay for making the dummy hash.
-  storage::dummy_password_hash();
+  app::ready_sign_ins();
 
   if (!options_.web_root.empty() && !s.set_mount_point("/", options_.web_root.string()))
     throw std::runtime_error("the web root " + options_.web_root.string() +

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "storage/sign_in_attempts.hpp"
+#include "app/accounts.hpp"
 #include "web/host_check.hpp"
 
 namespace httplib {

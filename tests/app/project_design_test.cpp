@@ -12,6 +12,7 @@
 #include "app/errors.hpp"
 #include "app/design_backends.hpp"
 #include "app/project_design.hpp"
+#include "app/test_design.hpp"
 #include "app/projects.hpp"
 #include "core/executor.hpp"
 #include "storage/lease.hpp"
@@ -105,6 +106,14 @@ TEST_F(ProjectDesign, ACancelledDesignIsInterruptedAndTheNextStartResumesIt) {
   const app::TestTarget target = app::test_target(*home_, user_, std::nullopt);
   EXPECT_EQ(target.design_id, whole.design.id);
   EXPECT_EQ(target.configuration, reference.report->elites.front().configuration);
+  // A design's best runs on the design's own mission (app::design_best), even once the project
+  // has been set to another one: /test and the assessment never score it on different missions.
+  app::set_mission(*home_, user_, "foraging");
+  const app::TestTarget after = app::test_target(*home_, user_, std::nullopt);
+  EXPECT_EQ(after.design_id, whole.design.id);
+  EXPECT_EQ(after.mission.name, target.mission.name);
+  EXPECT_EQ(after.mission.ticks, target.mission.ticks);
+  EXPECT_NE(after.mission.name, "foraging");
 }
 
 TEST_F(ProjectDesign, TwoDesignsAtOnceShareThePoolAndEndAsTheyDoAlone) {

@@ -1,0 +1,33 @@
+#include "app/design_spaces.hpp"
+
+#include <stdexcept>
+
+#include "app/design_job.hpp"
+#include "app/errors.hpp"
+
+namespace sd::app {
+
+design::DesignSpaceRequest design_space_request(const std::string& architectures, const std::string& flavours) {
+  try {
+    return design::request_from_text(architectures, flavours);
+  } catch (const std::invalid_argument& e) {
+    throw InvalidRequest(e.what());
+  }
+}
+
+nlohmann::json design_space_document(const std::string& architectures, const std::string& flavours) {
+  design::DesignSpaceChoice choice;
+  try {
+    choice = design::resolve_design_space(design_space_request(architectures, flavours));
+  } catch (const std::invalid_argument& e) {
+    throw InvalidRequest(e.what());
+  }
+  nlohmann::json names = nlohmann::json::array();
+  for (const Flavour f : choice.flavours) names.push_back(std::string(flavour_name(f)));
+  return {{"architectures", choice.architectures},
+          {"flavours", names},
+          {"notes", choice.notes},
+          {"minimum_budget", minimum_design_budget(design::build_design_space(choice))}};
+}
+
+}  // namespace sd::app

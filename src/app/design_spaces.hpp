@@ -1,0 +1,19 @@
+#pragma once
+// A design space as a front end asks for it: the architectures and flavours as text ("fsm,bt",
+// "chocolate,maple"; empty: the defaults), read as the CLI's flags, the web's form and Python
+// read them, with one refusal (InvalidRequest) for a bad one.
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+#include "design/design_space.hpp"
+
+namespace sd::app {
+
+design::DesignSpaceRequest design_space_request(const std::string& architectures, const std::string& flavours);
+
+/// What the space holds: {"architectures", "flavours", "notes", "minimum_budget"} (the web's
+/// design form shows it as the user chooses).
+nlohmann::json design_space_document(const std::string& architectures, const std::string& flavours);
+
+}  // namespace sd::app
