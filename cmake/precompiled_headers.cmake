@@ -37,13 +37,15 @@ if(SWARMDESIGN_PCH)
   target_precompile_headers(sd_pch_library PRIVATE ${SD_PCH_STANDARD} <nlohmann/json.hpp>)
 endif()
 
-# The tests' host: the test executables' own flags (tests/CMakeLists.txt, sd_add_test).
-if(SD_TEST_PCH)
-  find_package(GTest REQUIRED)
-  add_library(sd_pch_tests STATIC ${PROJECT_SOURCE_DIR}/cmake/pch_host.cpp)
-  target_link_libraries(sd_pch_tests PRIVATE sd_warnings nlohmann_json::nlohmann_json GTest::gtest)
-  target_precompile_headers(sd_pch_tests PRIVATE ${SD_PCH_STANDARD} <nlohmann/json.hpp> <gtest/gtest.h>)
-endif()
+# sd_test_pch_host(): the tests' host, with the test executables' own flags; tests/CMakeLists.txt
+# makes it once GoogleTest is found (a build without tests needs no GoogleTest).
+function(sd_test_pch_host)
+  if(SD_TEST_PCH)
+    add_library(sd_pch_tests STATIC ${PROJECT_SOURCE_DIR}/cmake/pch_host.cpp)
+    target_link_libraries(sd_pch_tests PRIVATE sd_warnings nlohmann_json::nlohmann_json GTest::gtest)
+    target_precompile_headers(sd_pch_tests PRIVATE ${SD_PCH_STANDARD} <nlohmann/json.hpp> <gtest/gtest.h>)
+  endif()
+endfunction()
 
 # sd_use_test_pch(TARGET): a test executable reuses the tests' precompiled header.
 function(sd_use_test_pch target)
