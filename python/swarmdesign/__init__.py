@@ -319,7 +319,9 @@ class DesignResult:
 def design(mission: MissionLike, budget: Union[int, str], *, architectures: Union[None, str, Iterable[str]] = None,
            flavours: Union[None, str, Iterable[str]] = None, seed: Optional[int] = None,
            folder: Union[None, str, "os.PathLike[str]"] = None, threads: int = 0,
-           progress: Optional[Callable[[dict[str, Any]], Any]] = None) -> DesignResult:
+           progress: Optional[Callable[[dict[str, Any]], Any]] = None,
+           pseudo_reality: Union[None, str, "os.PathLike[str]"] = None,
+           pseudo_reality_samples: Optional[str] = None) -> DesignResult:
     """Designs control software with Iterated F-Race, as ``swarmdesign design`` does, in-process.
 
     architectures: "fsm", "bt" or both (None: all); flavours: any of FLAVOURS (None: all);
@@ -327,12 +329,17 @@ def design(mission: MissionLike, budget: Union[int, str], *, architectures: Unio
     number of threads. folder keeps the design (design.db after every race step; None:
     ./design-<mission>-seed<S>). A folder that already holds this design is resumed: after
     Ctrl-C (KeyboardInterrupt) or a kill, the same call ends exactly as an uninterrupted one.
-    progress(dict) is called from this thread after race steps (iteration, runs used, best)."""
+    progress(dict) is called from this thread after race steps (iteration, runs used, best).
+    pseudo_reality: a robust design, as ``run-design --pseudo-reality``: the race's instances
+    are samples of this specification (a shipped name or a file), pseudo_reality_samples "A-B"
+    (default 101-120, so that assess's default samples 1-20 stay unseen)."""
     _check_fork()
     seed_value = _core.random_seed() if seed is None else _seed(seed)
     report = _core.design(_mission_reference(mission), _budget(budget), _names(architectures, "architectures"),
                           _names(flavours, "flavours"), seed_value, "" if folder is None else os.fspath(folder),
-                          _threads(threads), _callback(progress))
+                          _threads(threads), _callback(progress),
+                          "" if pseudo_reality is None else os.fspath(pseudo_reality),
+                          "" if pseudo_reality_samples is None else str(pseudo_reality_samples))
     return DesignResult(report)
 
 

@@ -54,13 +54,7 @@ argos::Experiment mission_experiment(Mission mission, const argos::ExperimentOpt
   const std::string& tag = options.controller_tag;
   if (tag != "automode_controller" && tag != "automode_controller_bt")
     throw InvalidRequest("--controller: automode_controller or automode_controller_bt, not '" + tag + "'");
-  if (pseudo_reality.empty() != sample.empty())
-    throw InvalidRequest("--pseudo-reality and --sample go together: the specification and which of its samples");
-  if (!pseudo_reality.empty()) {
-    const std::vector<std::uint64_t> k = parse_sample_range(sample);
-    if (k.size() != 1) throw InvalidRequest("--sample: one sample number, not a range");
-    mission = in_pseudo_reality(mission, load_requested_pseudo_reality(pseudo_reality, scope).spec, k.front());
-  }
+  mission = in_requested_sample(std::move(mission), pseudo_reality, sample, scope);
   argos::Experiment experiment = argos::argos_experiment(mission, options);
   if (mission.robot.has_deviations())
     experiment.notes.push_back("this pseudo-reality's per-robot deviations (each robot's own gains) have no ARGoS "

@@ -44,4 +44,14 @@ Mission in_pseudo_reality(const Mission& mission, const PseudoRealitySpec& spec,
   return m;
 }
 
+Mission in_requested_sample(Mission mission, const std::string& pseudo_reality, const std::string& sample,
+                            const FileScope& scope) {
+  if (pseudo_reality.empty() != sample.empty())
+    throw InvalidRequest("--pseudo-reality and --sample go together: the specification and which of its samples");
+  if (pseudo_reality.empty()) return mission;
+  const std::vector<std::uint64_t> k = parse_sample_range(sample);
+  if (k.size() != 1) throw InvalidRequest("--sample: one sample number, not a range");
+  return in_pseudo_reality(mission, load_requested_pseudo_reality(pseudo_reality, scope).spec, k.front());
+}
+
 }  // namespace sd::app

@@ -28,5 +28,10 @@ NamedPseudoReality pseudo_reality_from_document(const std::string& reference, co
 std::vector<std::uint64_t> parse_sample_range(const std::string& text);
 /// The mission run in sample k of the specification (its robot model replaced).
 Mission in_pseudo_reality(const Mission& mission, const PseudoRealitySpec& spec, std::uint64_t sample);
+/// As a front end asks for one sample (evaluate, export-argos, Python's Mission.in_pseudo_reality):
+/// `mission` in sample `sample` ("K") of `pseudo_reality` (a shipped name or a file, read under
+/// `scope`); unchanged when both are empty. InvalidRequest when only one is given, or for a range.
+Mission in_requested_sample(Mission mission, const std::string& pseudo_reality, const std::string& sample,
+                            const FileScope& scope = FileScope::local());
 
 }  // namespace sd::app

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "app/documents.hpp"
+#include "app/pseudo_realities.hpp"
 #include "app/evaluation_job.hpp"
 #include "app/inputs.hpp"
 #include "app/user_files.hpp"
@@ -79,7 +80,7 @@ void register_evaluate(CLI::App& app, Context& context) {
   auto* cmd = app.add_subcommand("evaluate", "Simulate control software on a mission and print its score per seed");
   struct Options {
     // The seed is text for app::parse_seed: CLI11 would read "-1" as 2^64-1.
-    std::string mission, seed = "1", seeds, trace, render, arlequin_modules, start_from;
+    std::string mission, seed = "1", seeds, trace, render, arlequin_modules, start_from, pseudo_reality, sample;
     int render_every = 10;
     int threads = 0;
     bool json = false;
@@ -102,15 +103,21 @@ void register_evaluate(CLI::App& app, Context& context) {
   cmd->add_option("--start-from", o->start_from,
                   "Start every run from the robots' poses at tick 0 of a trace FILE (ARGoS' traces, e.g. "
                   "tests/data/argos-starts/, or --trace output, uncompressed); the seed then draws only noise");
+  cmd->add_option("--pseudo-reality", o->pseudo_reality,
+                  "Run in a pseudo-reality sample instead of the design model: a shipped specification or a .json file");
+  cmd->add_option("--sample", o->sample, "With --pseudo-reality: which sample (1, 2, ...), as assess numbers them");
   cmd->add_flag("--json", o->json, "Print one JSON document");
   add_control_software_options(*cmd, o->software);
   cmd->footer(
-      "The control software ends the command line.\n"
+      "The control software ends the command line. With --pseudo-reality and --sample the runs are those\n"
+      "assess scores in that sample (the same bits), and --json's robot model is the sample's.\n"
       "Example: swarmdesign evaluate --mission aac --seeds 1-20 --fsm-config --nstates 1 --s0 10 --rwm0 50\n"
       "A video from --render frames: ffmpeg -framerate 10 -pattern_type glob -i 'DIR/*.svg' run.webm");
   cmd->callback([o, &context] {
-    const Mission mission = app::with_start_from(
-        app::with_requested_arlequin_modules(app::load_requested_mission(o->mission), o->arlequin_modules), o->start_from);
+    const Mission mission = app::in_requested_sample(
+        app::with_start_from(app::with_requested_arlequin_modules(app::load_requested_mission(o->mission), o->arlequin_modules),
+                             o->start_from),
+        o->pseudo_reality, o->sample);
     const ControlSoftware software = read_control_software(context, o->software);
     const std::vector<std::uint64_t> seeds =
         o->seeds.empty() ? std::vector<std::uint64_t>{app::parse_seed(o->seed)} : app::parse_seed_range(o->seeds);

@@ -85,19 +85,24 @@ py::object run_prepared(app::PreparedDesign& prepared, unsigned threads, const p
 
 py::object design(const std::string& mission, long long budget, const std::vector<std::string>& architectures,
                   const std::vector<std::string>& flavours, std::uint64_t seed, const std::string& folder, unsigned threads,
-                  const py::object& progress) {
+                  const py::object& progress, const std::string& pseudo_reality, const std::string& pseudo_reality_samples) {
   app::NewDesignSettings settings;
   settings.mission = mission;
   settings.budget = budget;
   settings.space = space_request(architectures, flavours);
   settings.seed = seed;
+  if (!pseudo_reality_samples.empty() && pseudo_reality.empty())
+    throw app::InvalidRequest("pseudo_reality_samples needs pseudo_reality");
+  settings.pseudo_reality = pseudo_reality;  // a robust design (run-design --pseudo-reality)
+  if (!pseudo_reality_samples.empty()) settings.pseudo_reality_samples = pseudo_reality_samples;
   // A folder that holds this design already goes on with it (app::prepare_design_in's rule).
   app::PreparedDesign prepared = app::prepare_design_in(settings, folder);
   return run_prepared(prepared, threads, progress);
 }
 
 py::object resume_design(const std::string& folder, unsigned threads, const py::object& progress) {
-  app::PreparedDesign prepared = app::prepare_resume(folder);
+  // A finished design gives its result, as `design --resume` and run-design do.
+  app::PreparedDesign prepared = app::prepare_resume(folder, true);
   return run_prepared(prepared, threads, progress);
 }
 
@@ -108,6 +113,7 @@ py::object read_design(const std::string& folder) { return to_python(app::design
 void bind_designs(py::module_& m) {
   m.def("design", &design, py::arg("mission"), py::arg("budget"), py::arg("architectures"), py::arg("flavours"),
         py::arg("seed"), py::arg("folder"), py::arg("threads") = 0, py::arg("progress") = py::none(),
+        py::arg("pseudo_reality") = "", py::arg("pseudo_reality_samples") = "",
         "Iterated F-Race in-process, as `swarmdesign design` runs it; the final report document.");
   m.def("resume_design", &resume_design, py::arg("folder"), py::arg("threads") = 0, py::arg("progress") = py::none(),
         "Continues the design kept in a folder (as `design --resume DIR`); the final report document.");

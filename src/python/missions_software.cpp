@@ -11,6 +11,7 @@
 #include "app/control_software_document.hpp"
 #include "app/documents.hpp"
 #include "app/errors.hpp"
+#include "app/pseudo_realities.hpp"
 #include "app/user_files.hpp"
 #include "control/config_string.hpp"
 #include "control/describe.hpp"
@@ -77,6 +78,11 @@ void bind_missions_and_software(py::module_& m) {
       .def_static("from_json", [](const std::string& text, const std::string& source) {
             return std::make_shared<Mission>(parse_mission(text, source));
           }, py::arg("text"), py::arg("source") = "<python>", "A mission from the text of a mission file.")
+      .def("in_pseudo_reality", [](const Mission& mission, const std::filesystem::path& pseudo_reality, std::uint64_t sample) {
+            return std::make_shared<Mission>(app::in_requested_sample(mission, pseudo_reality.string(), std::to_string(sample)));
+          }, py::arg("pseudo_reality"), py::arg("sample"),
+          "The mission in sample `sample` (1, 2, ...) of a pseudo-reality (a shipped name or a file), as "
+          "`evaluate --pseudo-reality SPEC --sample K` runs it and assess numbers it.")
       .def("with_arlequin_modules", [](const Mission& mission, const std::string& set) {
             return std::make_shared<Mission>(app::with_requested_arlequin_modules(mission, set));
           }, py::arg("module_set"), "The mission run with another Arlequin module set (swarmdesign, demiurge or a folder).")

@@ -4,8 +4,10 @@ web's API gives them too: tests/workflow/front_ends_test.cpp), because all three
 application service."""
 
 import json
+import os
 import re
 import subprocess
+from pathlib import Path
 
 import pytest
 
@@ -67,3 +69,37 @@ def test_collecting_a_local_project_brings_nothing_and_lists_its_experiments(acc
     assert document == json.loads(run_cli("collect", "--json"))
     assert document["experiments"] == 0 and document["designs_home"] == 0
     assert document["progress"] == account.experiments()
+
+
+RANDOM_WALK = "--fsm-config --nstates 1 --s0 10 --rwm0 50"
+
+
+def test_one_run_in_a_pseudo_reality_sample_is_the_clis(account):
+    mission = sd.Mission.builtin("aac").in_pseudo_reality("sampled-around", 3)
+    cli = json.loads(run_cli("evaluate", "--mission", "aac", "--pseudo-reality", "sampled-around", "--sample", 3,
+                             "--seeds", "1-2", "--json", *RANDOM_WALK.split()))
+    assert list(sd.evaluate(mission, RANDOM_WALK, "1-2")) == [run["score"] for run in cli["runs"]]
+    assert cli["robot"] != json.loads(run_cli("evaluate", "--mission", "aac", "--json", *RANDOM_WALK.split()))["robot"]
+    with pytest.raises(sd.InvalidRequestError):
+        sd.Mission.builtin("aac").in_pseudo_reality("no-such-world", 1)
+
+
+def test_a_robust_design_is_the_clis(account, tmp_path):
+    mission = next((account_folder(account) / "fe").glob("aac-short.json"))
+    here = sd.design(mission, 1100, architectures="fsm", flavours="chocolate", seed=4, folder=tmp_path / "py",
+                     pseudo_reality="sampled-around", pseudo_reality_samples="101-103")
+    cli = json.loads(run_cli("design", "--mission", mission, "--budget", 1100, "--fsm", "--chocolate", "--seed", 4,
+                             "--pseudo-reality", "sampled-around", "--pseudo-reality-samples", "101-103",
+                             "--out", tmp_path / "cli", "--json"))
+    assert here.report["best"] == cli["best"]
+    assert here.report["pseudo_reality"] == cli["pseudo_reality"]
+    # Asked again, the folder's design is the one asked for: its result, not a second run.
+    again = sd.design(mission, 1100, architectures="fsm", flavours="chocolate", seed=4, folder=tmp_path / "py",
+                      pseudo_reality="sampled-around", pseudo_reality_samples="101-103")
+    assert again.report["best"] == here.report["best"]
+    with pytest.raises(sd.DesignFolderError, match="other settings"):
+        sd.design(mission, 1100, architectures="fsm", flavours="chocolate", seed=4, folder=tmp_path / "py")
+
+
+def account_folder(account):
+    return Path(os.environ["SWARMDESIGN_HOME"]) / "users" / "py-front" / "projects"
