@@ -214,6 +214,19 @@ void refresh_cluster_experiment(Home& home, const storage::Project& project, con
   }
 }
 
+std::string stop_cluster_experiment(Home& home, const storage::Project& project, const storage::Experiment& experiment) {
+  if (!project.cluster) throw std::logic_error("stop_cluster_experiment in a local project");
+  if (experiment.state != storage::DesignState::running) throw Conflict("experiment " + experiment.name + " is not running");
+  storage::ClusterJobs jobs(home.workspace(), project);
+  const auto job = jobs.find_array(experiment.id);
+  if (!job || job->job_id.empty()) throw Conflict("experiment " + experiment.name + " is still being submitted; stop it once Slurm has it");
+  cluster::cancel(cluster_shell(project), job->job_id);
+  storage::Experiments(home.workspace(), project).release(experiment.id, experiment.owner);
+  jobs.array_observed(experiment.id, "CANCELLED",
+                      "Slurm array job " + job->job_id + " cancelled; run the same experiment again to resume it");
+  return "cancelled Slurm array job " + job->job_id;
+}
+
 namespace {
 int designs_done(storage::Experiments& store, std::int64_t experiment_id) {
   int done = 0;

@@ -38,6 +38,11 @@ ClusterExperimentSubmission submit_cluster_experiment(Home& home, const storage:
 void refresh_cluster_experiment(Home& home, const storage::Project& project, const storage::Experiment& experiment,
                                 unsigned threads = 0);
 
+/// Cancels a running cluster experiment's array (scancel): the experiment becomes interrupted
+/// and the same experiment resumes it (its designs from their last checkpoints). Conflict when
+/// it does not run; a cluster::ClusterError when the cluster refuses.
+std::string stop_cluster_experiment(Home& home, const storage::Project& project, const storage::Experiment& experiment);
+
 /// What collect_cluster_experiments did.
 struct ClusterCollection {
   int experiments = 0;     // running cluster experiments looked at

@@ -13,6 +13,7 @@
 #include "app/design_method.hpp"
 #include "app/experiment_job.hpp"
 #include "app/cluster_experiments.hpp"
+#include "app/experiment_backends.hpp"
 #include "app/experiment_report.hpp"
 #include "app/projects.hpp"
 #include "app/inputs.hpp"
@@ -123,10 +124,8 @@ class ExperimentDisplay final : public app::ExperimentObserver {
 };
 
 /// A cluster project's experiment: its designs go to Slurm as one job array.
-void submit_to_cluster(app::Home& home, const storage::User& user, const app::PlannedExperiment& plan,
-                       const ExperimentOptions& o) {
-  const auto s = app::submit_cluster_experiment(home, user, plan, o.job,
-                                                o.project.empty() ? std::nullopt : std::optional(o.project), o.threads);
+void print_submission(app::Home& home, const storage::User& user, const app::ClusterExperimentSubmission& s,
+                      const ExperimentOptions& o) {
   if (o.json) {
     std::cout << app::experiments_document(app::experiments_progress(home, user, s.project.name)).dump(2) << "\n";
     return;
@@ -170,21 +169,17 @@ void run_experiment_command(const ExperimentOptions& o) {
     return;
   }
 
-  {
+  // Where it runs is app::launch_experiment's choice (a cluster project's: a Slurm array).
+  const app::LaunchedExperiment launched = [&] {
     app::Home home;
     const auto user = app::signed_in_user(home);
-    const std::optional<std::string> project = o.project.empty() ? std::nullopt : std::optional(o.project);
-    if (app::project_or_active(home, user, project).cluster) return submit_to_cluster(home, user, plan, o);
-    if (o.job.given())
-      throw UsageError("--nodes, --ntasks, --cpus-per-task, --time, --partition and --account are for a cluster project; "
-                       "this one runs on this machine");
-  }
-  app::StartedExperiment started = [&] {
-    app::Home home;
-    return app::start_experiment(home, app::signed_in_user(home), plan,
-                                 {o.project.empty() ? std::nullopt : std::optional(o.project),
-                                  storage::owner_text(storage::local_process())});
+    app::LaunchedExperiment l =
+        app::launch_experiment(home, user, {plan, o.project.empty() ? std::nullopt : std::optional(o.project), o.job, o.threads});
+    if (l.slurm) print_submission(home, user, *l.slurm, o);
+    return l;
   }();
+  if (launched.where == app::ExperimentWhere::slurm) return;
+  app::StartedExperiment started = launched.started;
   const std::string& name = started.experiment.name;
   if (!o.json) {
     if (started.already_finished) std::cout << "Experiment " << name << " of " << started.project.name << " has already finished.\n";

@@ -5,6 +5,7 @@
 #include "app/documents/design.hpp"
 #include "app/documents/experiments.hpp"
 #include "app/errors.hpp"
+#include "app/experiment_backends.hpp"
 #include "app/experiment_job.hpp"
 #include "app/inputs.hpp"
 #include "app/user_files.hpp"
@@ -81,11 +82,16 @@ json experiments_list(Call& call, const std::string& project) {
   return list;
 }
 
-json started_document(Call& call, const app::PlannedExperiment& plan, const app::StartedExperiment& started) {
+/// Started where the project's experiments run (app::launch_experiment): this server's thread,
+/// or for a cluster project a Slurm job array ("where": "server" or "slurm").
+json launched_document(Call& call, const app::PlannedExperiment& plan) {
+  const app::LaunchedExperiment launched =
+      app::launch_experiment(call.home, call.user, {plan, call.match(1), {}, 0}, &call.context.experiments);
+  const app::StartedExperiment& started = launched.started;
   for (const json& e : experiments_list(call, started.project.name))
     if (e.at("name") == started.experiment.name)
       return {{"experiment", e}, {"resumed", started.resumed}, {"already_finished", started.already_finished},
-              {"notes", plan.notes}};
+              {"notes", plan.notes}, {"where", launched.where == app::ExperimentWhere::slurm ? "slurm" : "server"}};
   throw app::NotFound("experiment " + started.experiment.name + " vanished");
 }
 
@@ -110,7 +116,7 @@ void add_experiment_routes(Routes& routes) {
     const app::PlannedExperiment plan = planned(call, requested_protocol(call.body));
     if (call.body.contains("dry_run") && call.body.at("dry_run").is_boolean() && call.body.at("dry_run").get<bool>())
       return app::plan_document(plan, nullptr);
-    return started_document(call, plan, call.context.experiments.start(call.home, call.user, plan, call.match(1)));
+    return launched_document(call, plan);
   });
 
   // The design an experiment is making, as the monitor shows a design (`status --complete`).
@@ -123,13 +129,12 @@ void add_experiment_routes(Routes& routes) {
   });
 
   routes.post(project + "/experiments/" + kNamePattern + "/stop", [](Call& call) -> json {
-    return {{"stopping", call.context.experiments.stop(call.home, call.user, call.match(1), call.match(2))}};
+    return {{"stopping", app::stop_experiment(call.home, call.user, call.match(1), call.match(2), &call.context.experiments)}};
   });
 
   // An interrupted experiment goes on with the protocol it was started with.
   routes.post(project + "/experiments/" + kNamePattern + "/resume", [](Call& call) -> json {
-    const app::PlannedExperiment plan = planned(call, app::stored_protocol(call.home, call.user, call.match(1), call.match(2)));
-    return started_document(call, plan, call.context.experiments.start(call.home, call.user, plan, call.match(1)));
+    return launched_document(call, planned(call, app::stored_protocol(call.home, call.user, call.match(1), call.match(2))));
   });
 
   routes.get_raw(project + "/experiments/" + kNamePattern + "/report", [](Call& call) {

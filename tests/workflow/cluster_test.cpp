@@ -194,6 +194,42 @@ TEST_F(cluster_projects, FromTheWebAClusterProjectsStartGoesToSlurmAndStopCancel
   EXPECT_EQ(after["cluster_job"]["slurm_state"], "CANCELLED");
 }
 
+// The web app's Start of an experiment in a cluster project goes where the CLI's goes (one
+// backend, app::launch_experiment): a Slurm job array, not a thread of the server; its Stop
+// cancels the array, and its Resume submits what is left to Slurm again.
+TEST_F(cluster_projects, FromTheWebAClusterProjectsExperimentGoesToSlurmAndStopCancelsItsArray) {
+  cluster_project("webarray", this_host(), 1100);
+  for (const auto& [name, value] : variables_) ::setenv(name.c_str(), value.c_str(), 1);
+  // The page reads mission files in the user's own projects only.
+  const auto mission = write_short_mission(home() / "users" / "ada" / "projects" / "webarray", 2);
+  const auto protocol = [&](int budget) {
+    return json{{"name", "webtiny"}, {"designs", 2}, {"assessment_seeds", 2},
+                {"missions", {{{"mission", mission.string()}, {"budget", budget},
+                               {"conditions", {{{"name", "alone"}, {"architectures", {"fsm"}}, {"flavours", {"chocolate"}}}}}}}}};
+  };
+  RunningServer server(home());
+  WebClient browser(server.port());
+  ASSERT_TRUE(browser.sign_in("ada", "ada-secret-pw")) << browser.last_refusal();
+
+  const Answer started = browser.post("/api/projects/webarray/experiments", {{"text", protocol(60000).dump()}});
+  ASSERT_EQ(started.status, 200) << started.text;
+  EXPECT_EQ(started.body["where"], "slurm");
+  EXPECT_FALSE(started.body["experiment"]["running_here"].get<bool>()) << "a cluster project's experiment runs in Slurm";
+  EXPECT_EQ(status()["experiments"][0]["state"], "running");
+
+  const Answer stopped = browser.post("/api/projects/webarray/experiments/webtiny/stop", json::object());
+  ASSERT_EQ(stopped.status, 200) << stopped.text;
+  EXPECT_NE(stopped.body["stopping"].get<std::string>().find("cancelled Slurm array job"), std::string::npos) << stopped.text;
+  EXPECT_EQ(status()["experiments"][0]["state"], "interrupted");
+  EXPECT_EQ(browser.post("/api/projects/webarray/experiments/webtiny/stop", json::object()).status, 409);
+
+  const Answer resumed = browser.post("/api/projects/webarray/experiments/webtiny/resume", json::object());
+  ASSERT_EQ(resumed.status, 200) << resumed.text;
+  EXPECT_EQ(resumed.body["where"], "slurm");
+  EXPECT_EQ(status()["experiments"][0]["state"], "running");
+  ASSERT_EQ(browser.post("/api/projects/webarray/experiments/webtiny/stop", json::object()).status, 200);
+}
+
 TEST_F(cluster_projects, OverSshADesignIsSubmittedFollowedAndBroughtBack) {
   cluster_project("remote", "127.0.0.1", 1100);
   const json checked = json::parse(sd_ok({"cluster-check", "--json"}));
