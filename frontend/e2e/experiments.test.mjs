@@ -60,11 +60,17 @@ test('a thesis protocol is planned with the CLI\'s choices, and nothing is recor
   for (const m of missions.slice(1)) await page.uncheck(`[data-testid="exp-mission-${m}"]`);
   await page.fill('#exp-designs', '2');
   await page.fill('#exp-scale', '0.01');
+  // Also in a pseudo-reality: the page sends it as the CLI's flags do (one protocol request).
+  await page.fill('#exp-reality', 'sampled-around');
+  await page.fill('#exp-reality-samples', '3');
   await page.click('#exp-dry');
   await page.waitForSelector('[data-testid="exp-plan-summary"]');
   const summary = await page.textContent('[data-testid="exp-plan-summary"]');
-  const expected = JSON.parse(cli(server.env, ['experiment', 'architecture', '--missions', missions[0], '--designs', '2', '--budget-scale', '0.01', '--dry-run', '--json']));
-  assert.match(summary, new RegExp(`^architecture: ${expected.designs.length} designs .*${expected.design_runs.toLocaleString('en')} design runs`));
+  const expected = JSON.parse(cli(server.env, ['experiment', 'architecture', '--missions', missions[0], '--designs', '2', '--budget-scale', '0.01',
+    '--pseudo-reality', 'sampled-around', '--pseudo-reality-samples', '3', '--dry-run', '--json']));
+  assert.match(summary, new RegExp(`^architecture: ${expected.designs.length} designs .*${expected.design_runs.toLocaleString('en')} design runs and ${expected.assessment_runs.toLocaleString('en')} assessment runs`));
+  await page.fill('#exp-reality', '');
+  await page.fill('#exp-reality-samples', '');
   await shot(page, 'planned');
   assert.match(await page.textContent('#experiment-list'), /none yet/);
 });

@@ -47,6 +47,10 @@ export function initExperiments({ project, onChanged, onFollow }) {
     number('exp-designs', 'designs', (v) => Number.parseInt(v, 10));
     number('exp-seeds', 'assessment_seeds', (v) => Number.parseInt(v, 10));
     number('exp-scale', 'budget_scale', Number);
+    // Every final design also assessed in a pseudo-reality (experiment --pseudo-reality).
+    const reality = $('exp-reality').value.trim();
+    if (reality) body.pseudo_reality = reality;
+    number('exp-reality-samples', 'pseudo_reality_samples', (v) => Number.parseInt(v, 10));
     const name = $('exp-name').value.trim();
     if (name) body.name = name;
     return body;
@@ -64,7 +68,7 @@ export function initExperiments({ project, onChanged, onFollow }) {
           text: `${answer.protocol.name}: ${answer.designs.length} designs (${conditions.size} conditions × ${answer.protocol.missions.length} missions × ${answer.protocol.designs}), ${answer.design_runs.toLocaleString('en')} design runs and ${answer.assessment_runs.toLocaleString('en')} assessment runs` }),
         ...answer.notes.map((n) => el('div', { class: 'muted', text: n })));
       } else {
-        out.replaceChildren(el('div', { testid: 'exp-started', text: `${answer.experiment.name} ${answer.already_finished ? 'had already finished' : answer.resumed ? 'resumed' : 'started'} on this server` }),
+        out.replaceChildren(el('div', { testid: 'exp-started', text: `${answer.experiment.name} ${answer.already_finished ? 'had already finished' : answer.resumed ? 'resumed' : 'started'} ${answer.where === 'slurm' ? 'as a Slurm job array' : 'on this server'}` }),
           ...answer.notes.map((n) => el('div', { class: 'muted', text: n })));
         onChanged();
       }

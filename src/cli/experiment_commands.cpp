@@ -15,6 +15,7 @@
 #include "app/cluster_experiments.hpp"
 #include "app/experiment_backends.hpp"
 #include "app/experiment_report.hpp"
+#include "app/protocol_requests.hpp"
 #include "app/projects.hpp"
 #include "app/inputs.hpp"
 #include "cli/command_registry.hpp"
@@ -48,13 +49,13 @@ std::string duration_text(double seconds) {
   return text;
 }
 
-experiments::Protocol requested_protocol(const ExperimentOptions& o) {
-  if (!o.name.empty() && !o.file.empty()) throw UsageError("name a built-in experiment or give --file, not both");
-  if (o.name.empty() && o.file.empty())
-    throw UsageError("name an experiment (validation, combination, architecture) or give --file PROTOCOL");
-  if (!o.file.empty() && o.evostick) throw UsageError("--evostick adds a condition to a built-in experiment; write it in the file");
-  experiments::Protocol protocol = o.file.empty() ? experiments::builtin_protocol(o.name, o.evostick) : experiments::read_protocol_file(o.file);
-  experiments::ProtocolOverrides overrides;
+/// The flags as the one protocol request every front end fills (app/protocol_requests.hpp).
+app::ProtocolRequest protocol_request(const ExperimentOptions& o) {
+  app::ProtocolRequest r;
+  r.builtin = o.name;
+  r.file = o.file;
+  r.evostick = o.evostick;
+  auto& overrides = r.overrides;
   if (!o.missions.empty()) overrides.missions = design::split_list(o.missions);
   if (o.designs_option->count()) overrides.designs = o.designs;
   if (o.eval_seeds_option->count()) overrides.assessment_seeds = o.eval_seeds;
@@ -63,7 +64,7 @@ experiments::Protocol requested_protocol(const ExperimentOptions& o) {
   if (!o.rename.empty()) overrides.name = o.rename;
   if (!o.pseudo_reality.empty()) overrides.pseudo_reality = o.pseudo_reality;
   if (o.samples_option->count()) overrides.pseudo_reality_samples = o.samples;
-  return experiments::with_overrides(std::move(protocol), overrides);
+  return r;
 }
 
 void print_plan(const app::PlannedExperiment& plan) {
@@ -152,7 +153,7 @@ void print_submission(app::Home& home, const storage::User& user, const app::Clu
 }
 
 void run_experiment_command(const ExperimentOptions& o) {
-  const app::PlannedExperiment plan = app::plan_experiment(requested_protocol(o));
+  const app::PlannedExperiment plan = app::plan_requested_experiment(protocol_request(o));
   for (const auto& note : plan.notes) std::cerr << "swarmdesign: note: " << note << "\n";
   if (o.dry_run) {
     const app::DurationEstimate estimate = app::estimate_duration(plan, o.threads);

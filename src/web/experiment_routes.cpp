@@ -11,6 +11,7 @@
 #include "app/user_files.hpp"
 #include "experiments/protocol.hpp"
 #include "app/experiment_report.hpp"
+#include "app/protocol_requests.hpp"
 #include "web/http_io.hpp"
 #include "web/routes.hpp"
 
@@ -20,48 +21,44 @@ namespace {
 
 using nlohmann::json;
 
-/// The protocol a request asks for: a built-in one by name, or the user's own (its JSON text),
-/// with the choices the CLI's flags give. InvalidRequest naming the field at fault.
-experiments::Protocol requested_protocol(const json& body) {
-  try {
-    experiments::Protocol protocol;
-    if (body.contains("text") && !body.at("text").is_null()) {
-      protocol = experiments::parse_protocol_text(text_field(body, "text"), "protocol");
-    } else {
-      const std::string name = body.contains("protocol") ? text_field(body, "protocol") : "";
-      bool evostick = false;
-      if (body.contains("evostick") && !body.at("evostick").is_null()) {
-        if (!body.at("evostick").is_boolean()) throw app::InvalidRequest("evostick must be true or false");
-        evostick = body.at("evostick").get<bool>();
-      }
-      protocol = experiments::builtin_protocol(name, evostick);
-    }
-    experiments::ProtocolOverrides o;
-    if (body.contains("missions") && !body.at("missions").is_null()) {
-      if (!body.at("missions").is_array()) throw app::InvalidRequest("missions must be a list of mission names");
-      o.missions.emplace();
-      for (const json& m : body.at("missions")) {
-        if (!m.is_string()) throw app::InvalidRequest("missions must be a list of mission names");
-        o.missions->push_back(m.get<std::string>());
-      }
-    }
-    const auto integer = [&](const char* key) -> std::optional<int> {
-      if (!body.contains(key) || body.at(key).is_null()) return std::nullopt;
-      if (!body.at(key).is_number_integer()) throw app::InvalidRequest(std::string(key) + " must be a whole number");
-      return body.at(key).get<int>();
-    };
-    o.designs = integer("designs");
-    o.assessment_seeds = integer("assessment_seeds");
-    if (body.contains("budget_scale") && !body.at("budget_scale").is_null()) {
-      if (!body.at("budget_scale").is_number()) throw app::InvalidRequest("budget_scale must be a number");
-      o.budget_scale = body.at("budget_scale").get<double>();
-    }
-    if (body.contains("seed") && !body.at("seed").is_null()) o.seed = app::parse_seed(text_field(body, "seed"));
-    if (body.contains("name") && !body.at("name").is_null() && !text_field(body, "name").empty()) o.name = text_field(body, "name");
-    return experiments::with_overrides(std::move(protocol), o);
-  } catch (const experiments::ProtocolError& e) {
-    throw app::InvalidRequest(e.what());
+/// The body as the one protocol request every front end fills (app/protocol_requests.hpp): a
+/// built-in protocol by name or the user's own (its JSON text), with the choices the CLI's
+/// flags give. InvalidRequest naming the field at fault.
+app::ProtocolRequest protocol_request(const json& body) {
+  app::ProtocolRequest r;
+  if (body.contains("text") && !body.at("text").is_null()) r.text = text_field(body, "text");
+  else r.builtin = body.contains("protocol") ? text_field(body, "protocol") : "";
+  if (body.contains("evostick") && !body.at("evostick").is_null()) {
+    if (!body.at("evostick").is_boolean()) throw app::InvalidRequest("evostick must be true or false");
+    r.evostick = body.at("evostick").get<bool>() && r.text.empty();
   }
+  experiments::ProtocolOverrides& o = r.overrides;
+  if (body.contains("missions") && !body.at("missions").is_null()) {
+    if (!body.at("missions").is_array()) throw app::InvalidRequest("missions must be a list of mission names");
+    o.missions.emplace();
+    for (const json& m : body.at("missions")) {
+      if (!m.is_string()) throw app::InvalidRequest("missions must be a list of mission names");
+      o.missions->push_back(m.get<std::string>());
+    }
+  }
+  const auto integer = [&](const char* key) -> std::optional<int> {
+    if (!body.contains(key) || body.at(key).is_null()) return std::nullopt;
+    if (!body.at(key).is_number_integer()) throw app::InvalidRequest(std::string(key) + " must be a whole number");
+    return body.at(key).get<int>();
+  };
+  o.designs = integer("designs");
+  o.assessment_seeds = integer("assessment_seeds");
+  if (body.contains("budget_scale") && !body.at("budget_scale").is_null()) {
+    if (!body.at("budget_scale").is_number()) throw app::InvalidRequest("budget_scale must be a number");
+    o.budget_scale = body.at("budget_scale").get<double>();
+  }
+  if (body.contains("seed") && !body.at("seed").is_null()) o.seed = app::parse_seed(text_field(body, "seed"));
+  if (body.contains("name") && !body.at("name").is_null() && !text_field(body, "name").empty()) o.name = text_field(body, "name");
+  // Every final design also assessed in a pseudo-reality (experiment --pseudo-reality).
+  if (body.contains("pseudo_reality") && !body.at("pseudo_reality").is_null() && !text_field(body, "pseudo_reality").empty())
+    o.pseudo_reality = text_field(body, "pseudo_reality");
+  o.pseudo_reality_samples = integer("pseudo_reality_samples");
+  return r;
 }
 
 /// Planned as the CLI plans it, every mission read under the user's own scope first (a
@@ -113,7 +110,8 @@ void add_experiment_routes(Routes& routes) {
   // `swarmdesign experiment` from the page: planned (dry_run: only that), recorded and run on a
   // thread of this server; the same name and protocol again resumes an interrupted one.
   routes.post(project + "/experiments", [](Call& call) -> json {
-    const app::PlannedExperiment plan = planned(call, requested_protocol(call.body));
+    const app::PlannedExperiment plan =
+        app::plan_requested_experiment(protocol_request(call.body), app::FileScope::own_projects(call.home, call.user));
     if (call.body.contains("dry_run") && call.body.at("dry_run").is_boolean() && call.body.at("dry_run").get<bool>())
       return app::plan_document(plan, nullptr);
     return launched_document(call, plan);
