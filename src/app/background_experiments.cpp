@@ -13,8 +13,8 @@
 
 namespace sd::app {
 
-StartedExperiment BackgroundExperiments::start(Home& home, const storage::User& user, const PlannedExperiment& plan,
-                                               const std::string& project) {
+LaunchedExperiment BackgroundExperiments::start(Home& home, const storage::User& user, const storage::Project& project,
+                                                const ExperimentLaunch&, PlannedExperiment plan) {
   std::lock_guard lock(start_mutex_);
   const BackgroundJobs::Counts running = jobs_.running(user.id);
   if (running.mine >= kPerUser)
@@ -25,8 +25,12 @@ StartedExperiment BackgroundExperiments::start(Home& home, const storage::User& 
                    "again when one has finished");
   const std::string owner = storage::owner_text(storage::server_thread(job_ + "-" + std::to_string(next_job_++)));
   // Refuses a namesake that still runs (here or elsewhere) or has another protocol.
-  auto started = std::make_shared<StartedExperiment>(start_experiment(home, user, plan, {project, owner}));
-  if (started->already_finished) return *started;
+  auto started = std::make_shared<StartedExperiment>(start_experiment(home, user, plan, {project.name, owner}));
+  LaunchedExperiment out;
+  out.where = ExperimentWhere::server;
+  out.started = *started;
+  out.plan = std::move(plan);
+  if (started->already_finished) return out;
   jobs_.launch(started->experiment.id, user.id, started->project.id, [started](const CancelToken& cancel) {
     try {
       run_experiment(*started, {.threads = 0, .evaluator = nullptr, .observer = nullptr, .cancel = &cancel});
@@ -34,23 +38,13 @@ StartedExperiment BackgroundExperiments::start(Home& home, const storage::User& 
       std::cerr << "experiment " << started->experiment.name << " failed: " << e.what() << "\n";
     }
   });
-  return *started;
+  return out;
 }
 
-std::string BackgroundExperiments::stop(Home& home, const storage::User& user, const std::string& project,
-                                        const std::string& name) {
-  storage::Experiments experiments(home.workspace(), storage::Projects(home.workspace(), user).get(project));
-  const storage::Experiment e = experiments.get(name);
-  if (jobs_.cancel(e.id)) return "asked its thread to stop after the current race step";
-  if (e.state != storage::DesignState::running || !storage::owner_alive(e.owner, e.heartbeat_at, storage::unix_now(), 0))
-    throw Conflict("experiment " + name + " is not running");
-  const auto parsed = storage::parse_owner(e.owner);
-  const auto* process = parsed ? std::get_if<storage::LocalProcess>(&*parsed) : nullptr;
-  if (!process || !storage::runs_here(*process))
-    throw Conflict("experiment " + name + " runs in another server or on another machine: stop it there");
-  ::kill(static_cast<pid_t>(process->pid), SIGTERM);  // all it did is durable: it resumes where it was
-  for (int i = 0; i < 200 && storage::runs_here(*process); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  return "stopped process " + std::to_string(process->pid);
+std::string BackgroundExperiments::stop(Home&, const storage::User&, const storage::Project&,
+                                        const storage::Experiment& experiment) {
+  if (jobs_.cancel(experiment.id)) return "asked its thread to stop after the current race step";
+  return stop_experiment_process(experiment);  // a CLI process of this machine, if it is one
 }
 
 bool BackgroundExperiments::running_here(std::int64_t experiment_id) const { return jobs_.runs(experiment_id); }

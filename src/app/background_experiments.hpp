@@ -10,12 +10,13 @@
 #include <string>
 
 #include "app/background_jobs.hpp"
+#include "app/experiment_backend.hpp"
 #include "app/experiment_job.hpp"
 #include "app/home.hpp"
 
 namespace sd::app {
 
-class BackgroundExperiments {
+class BackgroundExperiments final : public ExperimentBackend {
  public:
   /// Each experiment takes every core: one per user, and a few for the server.
   static constexpr int kPerUser = 1;
@@ -26,12 +27,13 @@ class BackgroundExperiments {
 
   /// Records the planned experiment in the project (or takes up its interrupted namesake) and
   /// runs it on a thread. Conflict, before anything is recorded, past kPerUser or kPerServer.
-  StartedExperiment start(Home& home, const storage::User& user, const PlannedExperiment& plan,
-                          const std::string& project);
-  /// Asks experiment `name` of the project to stop after its current race step (a thread of
-  /// this server) or stops the CLI process of this machine that runs it. NotFound for an
-  /// experiment the project does not have; Conflict when it does not run, or runs elsewhere.
-  std::string stop(Home& home, const storage::User& user, const std::string& project, const std::string& name);
+  LaunchedExperiment start(Home& home, const storage::User& user, const storage::Project& project,
+                           const ExperimentLaunch& launch, PlannedExperiment plan) override;
+  /// Asks the experiment to stop after its current race step (a thread of this server) or
+  /// stops the CLI process of this machine that runs it. Conflict when it does not run, or
+  /// runs elsewhere.
+  std::string stop(Home& home, const storage::User& user, const storage::Project& project,
+                   const storage::Experiment& experiment) override;
   bool running_here(std::int64_t experiment_id) const;
 
  private:

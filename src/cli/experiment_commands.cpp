@@ -152,34 +152,36 @@ void print_submission(app::Home& home, const storage::User& user, const app::Clu
             << "  watch it:  swarmdesign status\n  then:      swarmdesign report " << name << "\n";
 }
 
-void run_experiment_command(const ExperimentOptions& o) {
-  const app::PlannedExperiment plan = app::plan_requested_experiment(protocol_request(o));
+void print_estimate(const app::PlannedExperiment& plan, const ExperimentOptions& o) {
   for (const auto& note : plan.notes) std::cerr << "swarmdesign: note: " << note << "\n";
-  if (o.dry_run) {
-    const app::DurationEstimate estimate = app::estimate_duration(plan, o.threads);
-    if (o.json) {
-      std::cout << app::plan_document(plan, &estimate).dump(2) << "\n";
-      return;
-    }
-    print_plan(plan);
-    std::cout << "On this machine (" << estimate.threads << " threads, speed measured now):\n";
-    for (const auto& m : estimate.missions)
-      std::cout << "  " << m.mission << ": " << m.runs << " runs at " << format_number(std::round(m.seconds_per_run * 1e5) / 100)
-                << " ms per run = " << duration_text(m.seconds_per_run * static_cast<double>(m.runs)) << "\n";
-    std::cout << "  in all about " << duration_text(estimate.seconds) << " (simulation only; the optimiser adds a little)\n";
+  const app::DurationEstimate estimate = app::estimate_duration(plan, o.threads);
+  if (o.json) {
+    std::cout << app::plan_document(plan, &estimate).dump(2) << "\n";
     return;
   }
+  print_plan(plan);
+  std::cout << "On this machine (" << estimate.threads << " threads, speed measured now):\n";
+  for (const auto& m : estimate.missions)
+    std::cout << "  " << m.mission << ": " << m.runs << " runs at " << format_number(std::round(m.seconds_per_run * 1e5) / 100)
+              << " ms per run = " << duration_text(m.seconds_per_run * static_cast<double>(m.runs)) << "\n";
+  std::cout << "  in all about " << duration_text(estimate.seconds) << " (simulation only; the optimiser adds a little)\n";
+}
 
-  // Where it runs is app::launch_experiment's choice (a cluster project's: a Slurm array).
+void run_experiment_command(const ExperimentOptions& o) {
+  if (o.dry_run) return print_estimate(app::plan_requested_experiment(protocol_request(o)), o);
+  // Where it runs is the project's experiment backend's (a cluster project's: a Slurm array).
   const app::LaunchedExperiment launched = [&] {
     app::Home home;
     const auto user = app::signed_in_user(home);
-    app::LaunchedExperiment l =
-        app::launch_experiment(home, user, {plan, o.project.empty() ? std::nullopt : std::optional(o.project), o.job, o.threads});
+    app::LaunchedExperiment l = app::launch_experiment(
+        home, user, {protocol_request(o), o.project.empty() ? std::nullopt : std::optional(o.project), app::FileScope::local(),
+                     o.job, o.threads});
+    for (const auto& note : l.plan.notes) std::cerr << "swarmdesign: note: " << note << "\n";
     if (l.slurm) print_submission(home, user, *l.slurm, o);
     return l;
   }();
   if (launched.where == app::ExperimentWhere::slurm) return;
+  const app::PlannedExperiment& plan = launched.plan;
   app::StartedExperiment started = launched.started;
   const std::string& name = started.experiment.name;
   if (!o.json) {

@@ -61,14 +61,6 @@ app::ProtocolRequest protocol_request(const json& body) {
   return r;
 }
 
-/// Planned as the CLI plans it, every mission read under the user's own scope first (a
-/// protocol may name mission files: only the user's own).
-app::PlannedExperiment planned(Call& call, const experiments::Protocol& protocol) {
-  const app::FileScope scope = app::FileScope::own_projects(call.home, call.user);
-  for (const auto& m : protocol.missions) app::load_requested_mission(m.mission, scope);
-  return app::plan_experiment(protocol, scope);
-}
-
 /// The project's experiments, each saying whether this server runs it.
 json experiments_list(Call& call, const std::string& project) {
   const auto progress = app::experiments_progress(call.home, call.user, project);
@@ -81,14 +73,15 @@ json experiments_list(Call& call, const std::string& project) {
 
 /// Started where the project's experiments run (app::launch_experiment): this server's thread,
 /// or for a cluster project a Slurm job array ("where": "server" or "slurm").
-json launched_document(Call& call, const app::PlannedExperiment& plan) {
-  const app::LaunchedExperiment launched =
-      app::launch_experiment(call.home, call.user, {plan, call.match(1), {}, 0}, &call.context.experiments);
+json launched_document(Call& call, const app::ProtocolRequest& protocol) {
+  const app::LaunchedExperiment launched = app::launch_experiment(
+      call.home, call.user, {protocol, call.match(1), app::FileScope::own_projects(call.home, call.user), {}, 0},
+      &call.context.experiments);
   const app::StartedExperiment& started = launched.started;
   for (const json& e : experiments_list(call, started.project.name))
     if (e.at("name") == started.experiment.name)
       return {{"experiment", e}, {"resumed", started.resumed}, {"already_finished", started.already_finished},
-              {"notes", plan.notes}, {"where", launched.where == app::ExperimentWhere::slurm ? "slurm" : "server"}};
+              {"notes", launched.plan.notes}, {"where", launched.where == app::ExperimentWhere::slurm ? "slurm" : "server"}};
   throw app::NotFound("experiment " + started.experiment.name + " vanished");
 }
 
@@ -107,14 +100,14 @@ void add_experiment_routes(Routes& routes) {
 
   routes.get(project + "/experiments", [](Call& call) { return experiments_list(call, call.match(1)); });
 
-  // `swarmdesign experiment` from the page: planned (dry_run: only that), recorded and run on a
-  // thread of this server; the same name and protocol again resumes an interrupted one.
+  // `swarmdesign experiment` from the page: planned (dry_run: only that), recorded and run where
+  // the project's experiments run; the same name and protocol again resumes an interrupted one.
   routes.post(project + "/experiments", [](Call& call) -> json {
-    const app::PlannedExperiment plan =
-        app::plan_requested_experiment(protocol_request(call.body), app::FileScope::own_projects(call.home, call.user));
+    const app::ProtocolRequest request = protocol_request(call.body);
     if (call.body.contains("dry_run") && call.body.at("dry_run").is_boolean() && call.body.at("dry_run").get<bool>())
-      return app::plan_document(plan, nullptr);
-    return launched_document(call, plan);
+      return app::plan_document(app::plan_requested_experiment(request, app::FileScope::own_projects(call.home, call.user)),
+                                nullptr);
+    return launched_document(call, request);
   });
 
   // The design an experiment is making, as the monitor shows a design (`status --complete`).
@@ -132,7 +125,9 @@ void add_experiment_routes(Routes& routes) {
 
   // An interrupted experiment goes on with the protocol it was started with.
   routes.post(project + "/experiments/" + kNamePattern + "/resume", [](Call& call) -> json {
-    return launched_document(call, planned(call, app::stored_protocol(call.home, call.user, call.match(1), call.match(2))));
+    app::ProtocolRequest stored;
+    stored.text = experiments::to_json(app::stored_protocol(call.home, call.user, call.match(1), call.match(2))).dump();
+    return launched_document(call, stored);
   });
 
   routes.get_raw(project + "/experiments/" + kNamePattern + "/report", [](Call& call) {
