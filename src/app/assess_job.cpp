@@ -7,6 +7,7 @@
 #include <span>
 
 #include "app/errors.hpp"
+#include "app/reality_gap.hpp"
 #include "control/config_string.hpp"
 #include "statistics/correlation.hpp"
 #include "statistics/descriptive.hpp"
@@ -31,29 +32,33 @@ std::vector<int> ranks_of(const std::vector<double>& means, bool maximise) {
 }
 
 void summarise(SoftwareAssessment& a, std::size_t samples, std::size_t seeds, bool maximise) {
-  a.design_mean = statistics::mean(a.design_scores);
-  a.reality_mean = statistics::mean(a.reality_scores);
-  // Per seed: the design-model score against the mean over the samples run with that seed.
-  std::vector<double> reality_by_seed(seeds, 0.0), losses(seeds);
+  // Per seed: the mean over the samples run with that seed.
+  std::vector<double> reality_by_seed(seeds, 0.0);
   for (std::size_t k = 0; k < samples; ++k)
     for (std::size_t s = 0; s < seeds; ++s) reality_by_seed[s] += a.reality_scores[k * seeds + s] / static_cast<double>(samples);
-  for (std::size_t s = 0; s < seeds; ++s)
-    losses[s] = maximise ? a.design_scores[s] - reality_by_seed[s] : reality_by_seed[s] - a.design_scores[s];
-  const statistics::MeanInterval interval = statistics::t_interval(losses);
-  a.drop = maximise ? a.design_mean - a.reality_mean : a.reality_mean - a.design_mean;
-  a.drop_low = interval.low;
-  a.drop_high = interval.high;
-  a.relative_drop = a.design_mean != 0.0 ? a.drop / std::abs(a.design_mean) : kNaN;
-  const bool all_zero = std::all_of(losses.begin(), losses.end(), [](double v) { return v == 0.0; });
-  a.p_value = all_zero ? 1.0 : statistics::wilcoxon_signed_rank(a.design_scores, reality_by_seed).p_value;
+  const RealityGap g = reality_gap(a.design_scores, reality_by_seed, statistics::mean(a.reality_scores), maximise);
+  a.design_mean = g.design_mean;
+  a.reality_mean = g.reality_mean;
+  a.drop = g.drop;
+  a.drop_low = g.drop_low;
+  a.drop_high = g.drop_high;
+  a.relative_drop = g.relative_drop;
+  a.p_value = g.p_value;
 }
 
 }  // namespace
+
+std::size_t assess_runs(const AssessRequest& request) {
+  const std::size_t runs = request.software.size() * request.seeds.size() * (1 + request.samples.size());
+  if (runs > kMaxAssessRuns) throw InvalidRequest("assess: " + std::to_string(runs) + " runs; at most 10,000,000 at once");
+  return runs;
+}
 
 Assessment assess(const Mission& mission, const AssessRequest& request) {
   if (request.software.empty()) throw InvalidRequest("assess: no control software to assess");
   if (request.seeds.empty()) throw InvalidRequest("assess: no seed");
   if (request.samples.empty()) throw InvalidRequest("assess: no pseudo-reality sample");
+  assess_runs(request);
   const auto start = std::chrono::steady_clock::now();
   const bool maximise = mission.objective.direction == Direction::Maximize;
   const std::size_t n_software = request.software.size(), n_samples = request.samples.size(), n_seeds = request.seeds.size();

@@ -5,6 +5,7 @@
 // confidence interval and a paired test, and for several pieces of software their ranks in
 // each world and the rank correlation between worlds (a rank inversion is the reality gap's
 // second effect). `swarmdesign assess`, experiments and the web app assess through here.
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -35,6 +36,13 @@ struct AssessRequest {
   std::function<void(std::size_t done, std::size_t all)> progress;
   const CancelToken* cancel = nullptr; // checked between batches: Cancelled is thrown
 };
+
+/// The most runs one assessment may ask for, from any front end (a web page asks for fewer:
+/// kMaxDesignAssessmentRuns).
+inline constexpr std::size_t kMaxAssessRuns = 10'000'000;
+/// The runs the request asks for (each software on each seed, in the design model and in each
+/// sample); InvalidRequest past kMaxAssessRuns. assess() checks it before any run.
+std::size_t assess_runs(const AssessRequest& request);
 
 struct SoftwareAssessment {
   std::string label, configuration;

@@ -14,6 +14,7 @@
 #include "app/design_method.hpp"
 #include "app/errors.hpp"
 #include "app/experiment_job.hpp"
+#include "app/reality_gap.hpp"
 #include "control/config_string.hpp"
 #include "core/json_integer.hpp"
 #include "core/markup_text.hpp"
@@ -126,24 +127,16 @@ json reality_document(const std::vector<storage::RealityScore>& reality, const s
     by_seed[static_cast<std::size_t>(at - seeds.begin())] += r.score;
     ++count[static_cast<std::size_t>(at - seeds.begin())];
   }
-  std::vector<double> losses(seeds.size());
-  for (std::size_t j = 0; j < seeds.size(); ++j) {
-    by_seed[j] /= std::max(1, count[j]);
-    losses[j] = maximise ? design_scores[j] - by_seed[j] : by_seed[j] - design_scores[j];
-  }
-  const double design_mean = statistics::mean(design_scores), reality_mean = statistics::mean(scores);
-  const double drop = maximise ? design_mean - reality_mean : reality_mean - design_mean;
-  const statistics::MeanInterval interval = statistics::t_interval(losses);
-  const bool all_zero = std::all_of(losses.begin(), losses.end(), [](double v) { return v == 0.0; });
-  const double p = all_zero ? 1.0 : statistics::wilcoxon_signed_rank(design_scores, by_seed).p_value;
+  for (std::size_t j = 0; j < seeds.size(); ++j) by_seed[j] /= std::max(1, count[j]);
+  const RealityGap g = reality_gap(design_scores, by_seed, statistics::mean(scores), maximise);
   return {{"samples", samples.size()},
           {"scores", scores},
-          {"score", reality_mean},
+          {"score", g.reality_mean},
           {"by_seed", by_seed},
-          {"drop", drop},
-          {"drop_ci95", {interval.low, interval.high}},
-          {"relative_drop", design_mean != 0.0 ? json(drop / std::abs(design_mean)) : json(nullptr)},
-          {"p_value", p}};
+          {"drop", g.drop},
+          {"drop_ci95", {g.drop_low, g.drop_high}},
+          {"relative_drop", g.design_mean != 0.0 ? json(g.relative_drop) : json(nullptr)},
+          {"p_value", g.p_value}};
 }
 
 json design_document(const storage::ExperimentDesign& d, const std::string& mission, bool maximise,

@@ -123,8 +123,7 @@ void register_assess(CLI::App& app, Context& context) {
     request.samples = app::parse_sample_range(o->samples);
     request.seeds = app::parse_seed_range(o->seeds);
     request.threads = o->threads;
-    const std::size_t runs = request.software.size() * request.seeds.size() * (1 + request.samples.size());
-    if (runs > 10'000'000) throw UsageError("assess: " + std::to_string(runs) + " runs; at most 10,000,000 at once");
+    const std::size_t runs = app::assess_runs(request);
     if (!o->json)
       std::printf("Assessing %zu control software on %s: the design model and %zu sample(s) of %s, %zu seed(s) each (%zu runs)\n",
                   request.software.size(), mission.name.c_str(), request.samples.size(), spec.reference.c_str(),

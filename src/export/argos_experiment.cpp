@@ -138,24 +138,25 @@ void write_controller(pugi::xml_node root, const Mission& m, const ExperimentOpt
   attr(controller, "id", "automode");
   attr(controller, "library", options.automode_library);
   auto actuators = child(controller, "actuators");
-  element(actuators, "epuck_wheels", {{"implementation", "default"}, {"noise_std_dev", number(r.wheel_noise)}});
+  element(actuators, "epuck_wheels", {{"implementation", "default"}});
   element(actuators, "epuck_rgb_leds", {{"implementation", "default"}, {"medium", "leds"}});
-  element(actuators, "epuck_range_and_bearing",
-          {{"implementation", "medium"}, {"medium", "rab"}, {"data_size", "4"}, {"range", number(r.rab_range)}});
+  element(actuators, "epuck_range_and_bearing", {{"implementation", "medium"}, {"medium", "rab"}, {"data_size", "4"}});
   auto sensors = child(controller, "sensors");
-  element(sensors, "epuck_proximity", {{"implementation", "default"}, {"show_rays", "false"},
-                                       {"noise_level", number(r.proximity_noise)}, {"calibrated", "true"}});
-  auto rab = element(sensors, "epuck_range_and_bearing", {{"implementation", "medium"}, {"medium", "rab"}, {"data_size", "4"},
-                                                          {"loss_probability", number(r.rab_loss)}, {"calibrated", "true"}});
-  // The plugin's own spelling: IRIDIA's files say noise_std_deviation, which it never reads.
-  if (r.rab_noise > 0.0) attr(rab, "noise_std_dev", number(r.rab_noise));
-  element(sensors, "epuck_light", {{"implementation", "default"}, {"show_rays", "false"},
-                                   {"noise_level", number(r.light_noise)}, {"calibrated", "true"}});
-  element(sensors, "epuck_ground",
-          {{"implementation", "rot_z_only"}, {"noise_level", number(r.ground_noise)}, {"calibrated", "true"}});
-  auto camera = element(sensors, "epuck_omnidirectional_camera",
-                        {{"implementation", "rot_z_only"}, {"medium", "leds"}, {"show_rays", "false"}});
-  if (r.camera_noise > 0.0) attr(camera, "noise_std_dev", number(r.camera_noise));
+  element(sensors, "epuck_proximity", {{"implementation", "default"}, {"show_rays", "false"}, {"calibrated", "true"}});
+  element(sensors, "epuck_range_and_bearing",
+          {{"implementation", "medium"}, {"medium", "rab"}, {"data_size", "4"}, {"calibrated", "true"}});
+  element(sensors, "epuck_light", {{"implementation", "default"}, {"show_rays", "false"}, {"calibrated", "true"}});
+  element(sensors, "epuck_ground", {{"implementation", "rot_z_only"}, {"calibrated", "true"}});
+  element(sensors, "epuck_omnidirectional_camera", {{"implementation", "rot_z_only"}, {"medium", "leds"}, {"show_rays", "false"}});
+  // The robot model, knob by knob, where argos3-epuck reads each (kRobotKnobs' ARGoS columns).
+  // RAB noise: the plugin's own spelling, noise_std_dev; IRIDIA's files say noise_std_deviation,
+  // which it never reads.
+  for (const RobotKnob& knob : kRobotKnobs) {
+    const double value = r.*(knob.member);
+    if (knob.argos_block == ArgosBlock::None || (knob.argos_block == ArgosBlock::SensorsIfNonZero && value == 0.0)) continue;
+    const auto block = knob.argos_block == ArgosBlock::Actuators ? actuators : sensors;
+    attr(block.child(std::string(knob.argos_element).c_str()), std::string(knob.argos_attribute).c_str(), number(value));
+  }
   element(controller, "params", {{"readable", "false"}, {"history", "false"}});
 }
 

@@ -25,8 +25,6 @@ namespace py = pybind11;
 
 namespace {
 
-/// As `assess`: at most this many runs in one call.
-constexpr std::size_t kMaxRuns = 10'000'000;
 constexpr int kMaxThreads = 1024;
 
 py::object assess(const std::shared_ptr<Mission>& mission,
@@ -42,8 +40,7 @@ py::object assess(const std::shared_ptr<Mission>& mission,
   request.samples = samples;
   request.seeds = seeds;
   request.threads = threads;
-  const std::size_t runs = software.size() * seeds.size() * (1 + samples.size());
-  if (runs > kMaxRuns) throw app::InvalidRequest("assess: " + std::to_string(runs) + " runs; at most 10,000,000 at once");
+  app::assess_runs(request);  // the one limit, before any run
   app::CancelToken token;
   request.cancel = &token;
   std::atomic<std::size_t> done{0}, all{0};

@@ -44,30 +44,36 @@ struct RobotModel {
 /// What values a knob of the robot model takes.
 enum class KnobDomain { Positive, NonNegative, Probability, Deviation /* [0, 1) */ };
 
+/// Where argos3-epuck reads a knob: which of the controller's blocks, and whether the file
+/// leaves the attribute out at zero (a noise the plugin adds only when asked for).
+enum class ArgosBlock { None, Actuators, Sensors, SensorsIfNonZero };
+
 /// One knob of the robot model: its name in mission and pseudo-reality files, and where
-/// ARGoS reads it (the element of the e-puck's controller and its attribute).
+/// ARGoS reads it (the block and element of the e-puck's controller, and its attribute). The
+/// ARGoS exporter (export/argos_experiment.cpp) writes every knob from this table.
 struct RobotKnob {
   std::string_view name;
   double RobotModel::*member;
   KnobDomain domain;
-  std::string_view argos_element;    // empty: ARGoS has no such knob (per-robot deviations)
+  ArgosBlock argos_block;            // None: ARGoS has no such knob (per-robot deviations)
+  std::string_view argos_element;
   std::string_view argos_attribute;
 };
 
 inline constexpr std::array<RobotKnob, 13> kRobotKnobs{{
-    {"rab_range", &RobotModel::rab_range, KnobDomain::Positive, "epuck_range_and_bearing", "range"},
-    {"rab_loss", &RobotModel::rab_loss, KnobDomain::Probability, "epuck_range_and_bearing", "loss_probability"},
-    {"rab_noise", &RobotModel::rab_noise, KnobDomain::NonNegative, "epuck_range_and_bearing", "noise_std_dev"},
-    {"wheel_noise", &RobotModel::wheel_noise, KnobDomain::NonNegative, "epuck_wheels", "noise_std_dev"},
-    {"proximity_noise", &RobotModel::proximity_noise, KnobDomain::NonNegative, "epuck_proximity", "noise_level"},
-    {"light_noise", &RobotModel::light_noise, KnobDomain::NonNegative, "epuck_light", "noise_level"},
-    {"ground_noise", &RobotModel::ground_noise, KnobDomain::NonNegative, "epuck_ground", "noise_level"},
-    {"camera_range", &RobotModel::camera_range, KnobDomain::Positive, "", ""},
-    {"camera_noise", &RobotModel::camera_noise, KnobDomain::NonNegative, "epuck_omnidirectional_camera", "noise_std_dev"},
-    {"wheel_deviation", &RobotModel::wheel_deviation, KnobDomain::Deviation, "", ""},
-    {"proximity_deviation", &RobotModel::proximity_deviation, KnobDomain::Deviation, "", ""},
-    {"light_deviation", &RobotModel::light_deviation, KnobDomain::Deviation, "", ""},
-    {"rab_range_deviation", &RobotModel::rab_range_deviation, KnobDomain::Deviation, "", ""},
+    {"rab_range", &RobotModel::rab_range, KnobDomain::Positive, ArgosBlock::Actuators, "epuck_range_and_bearing", "range"},
+    {"rab_loss", &RobotModel::rab_loss, KnobDomain::Probability, ArgosBlock::Sensors, "epuck_range_and_bearing", "loss_probability"},
+    {"rab_noise", &RobotModel::rab_noise, KnobDomain::NonNegative, ArgosBlock::SensorsIfNonZero, "epuck_range_and_bearing", "noise_std_dev"},
+    {"wheel_noise", &RobotModel::wheel_noise, KnobDomain::NonNegative, ArgosBlock::Actuators, "epuck_wheels", "noise_std_dev"},
+    {"proximity_noise", &RobotModel::proximity_noise, KnobDomain::NonNegative, ArgosBlock::Sensors, "epuck_proximity", "noise_level"},
+    {"light_noise", &RobotModel::light_noise, KnobDomain::NonNegative, ArgosBlock::Sensors, "epuck_light", "noise_level"},
+    {"ground_noise", &RobotModel::ground_noise, KnobDomain::NonNegative, ArgosBlock::Sensors, "epuck_ground", "noise_level"},
+    {"camera_range", &RobotModel::camera_range, KnobDomain::Positive, ArgosBlock::None, "", ""},
+    {"camera_noise", &RobotModel::camera_noise, KnobDomain::NonNegative, ArgosBlock::SensorsIfNonZero, "epuck_omnidirectional_camera", "noise_std_dev"},
+    {"wheel_deviation", &RobotModel::wheel_deviation, KnobDomain::Deviation, ArgosBlock::None, "", ""},
+    {"proximity_deviation", &RobotModel::proximity_deviation, KnobDomain::Deviation, ArgosBlock::None, "", ""},
+    {"light_deviation", &RobotModel::light_deviation, KnobDomain::Deviation, ArgosBlock::None, "", ""},
+    {"rab_range_deviation", &RobotModel::rab_range_deviation, KnobDomain::Deviation, ArgosBlock::None, "", ""},
 }};
 
 }  // namespace sd

@@ -11,6 +11,7 @@
 
 #include "export/argos_experiment.hpp"
 #include "missions/catalogue.hpp"
+#include "simulator/robot_model.hpp"
 
 namespace sd {
 namespace {
@@ -159,6 +160,38 @@ TEST(export_ArgosExperiment, EveryCatalogueMissionIsAnArgosFileWithItsRobotsTime
     seen.insert(m.name);
   }
   for (const auto& [name, label] : kLabels) EXPECT_TRUE(seen.count(name)) << name;
+}
+
+// The reality gap's second step: a pseudo-reality sample runs in ARGoS as here. Every knob
+// kRobotKnobs says ARGoS reads is written where it says (block, element, attribute), each with
+// its own value; a noise left at zero is left out where the plugin adds it only when asked.
+TEST(export_ArgosExperiment, EveryKnobArgosReadsIsWrittenWhereTheKnobTableSays) {
+  Mission m = load_mission("aac");
+  for (std::size_t i = 0; i < kRobotKnobs.size(); ++i)
+    m.robot.*(kRobotKnobs[i].member) = kRobotKnobs[i].domain == KnobDomain::Positive ? 0.5 + 0.01 * static_cast<double>(i)
+                                                                                      : 0.01 * static_cast<double>(i + 1);
+  Parsed p;
+  parse(argos::argos_experiment(m).xml, p);
+  const auto controller = p.root.child("controllers").child("automode_controller");
+  int written = 0;
+  for (const RobotKnob& knob : kRobotKnobs) {
+    SCOPED_TRACE(std::string(knob.name));
+    if (knob.argos_block == ArgosBlock::None) continue;
+    const auto block = controller.child(knob.argos_block == ArgosBlock::Actuators ? "actuators" : "sensors");
+    const auto attribute = block.child(std::string(knob.argos_element).c_str()).attribute(std::string(knob.argos_attribute).c_str());
+    ASSERT_TRUE(attribute) << knob.argos_element << "/" << knob.argos_attribute;
+    EXPECT_DOUBLE_EQ(attribute.as_double(), m.robot.*(knob.member));
+    ++written;
+  }
+  EXPECT_EQ(written, 8);
+
+  m.robot.rab_noise = 0.0;
+  m.robot.camera_noise = 0.0;
+  Parsed quiet;
+  parse(argos::argos_experiment(m).xml, quiet);
+  const auto sensors = quiet.root.child("controllers").child("automode_controller").child("sensors");
+  EXPECT_FALSE(sensors.child("epuck_range_and_bearing").attribute("noise_std_dev"));
+  EXPECT_FALSE(sensors.child("epuck_omnidirectional_camera").attribute("noise_std_dev"));
 }
 
 TEST(export_ArgosExperiment, TuttiFruttiLoopFunctionsBuildTheLedArena) {
