@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <utility>
 
-#include "app/accounts.hpp"
 #include "app/errors.hpp"
 #include "app/projects.hpp"
 #include "app/saved_software.hpp"
@@ -14,15 +13,15 @@
 
 namespace sd::app {
 
-void add_software_to_assess(const AssessSources& sources, std::vector<SoftwareToAssess>& out, std::string& mission) {
+void add_software_to_assess(Home& home, const std::optional<storage::User>& user, const std::optional<std::string>& name,
+                            const AssessSources& sources, std::vector<SoftwareToAssess>& out, std::string& mission) {
   std::vector<std::pair<std::string, std::string>> folders;  // label, folder
   for (const std::string& folder : sources.design_folders) folders.emplace_back(folder, folder);
-  if (!sources.saved.empty() || !sources.project_designs.empty()) {  // the active project's
-    Home home;
-    const storage::User user = signed_in_user(home);
-    const storage::Project project = active_project(home, user);
+  if (!sources.saved.empty() || !sources.project_designs.empty()) {  // the user's project's
+    if (!user) throw InvalidRequest("saved software and project designs are a signed-in user's");
+    const storage::Project project = project_or_active(home, *user, name);
     if (mission.empty() && project.mission) mission = *project.mission;
-    const std::vector<SavedSoftware> saved = list_saved_software(home, user, project.name);
+    const std::vector<SavedSoftware> saved = list_saved_software(home, *user, project.name);
     for (const std::string& name : sources.saved) {
       const auto it = std::find_if(saved.begin(), saved.end(), [&](const SavedSoftware& s) { return s.name == name; });
       if (it == saved.end()) throw NotFound("--saved: project " + project.name + " has no saved software '" + name + "'");

@@ -9,6 +9,7 @@
 #include <iostream>
 #include <memory>
 
+#include "app/accounts.hpp"
 #include "app/assess_job.hpp"
 #include "app/assess_sources.hpp"
 #include "app/documents.hpp"
@@ -38,7 +39,11 @@ std::vector<app::SoftwareToAssess> gather_software(const Context& context, const
     out.push_back({"software", read_control_software(context, o.inline_software)});
   for (std::size_t i = 0; i < o.software.size(); ++i)
     out.push_back({"software " + std::to_string(i + 1), parse_control_software(o.software[i])});
-  app::add_software_to_assess({o.designs, o.project_designs, o.saved, o.elites}, out, mission);
+  app::Home home;
+  // The signed-in user's active project, asked for only when the command names its software.
+  std::optional<storage::User> user;
+  if (!o.project_designs.empty() || !o.saved.empty()) user = app::signed_in_user(home);
+  app::add_software_to_assess(home, user, std::nullopt, {o.designs, o.project_designs, o.saved, o.elites}, out, mission);
   if (out.empty())
     throw UsageError("nothing to assess: give --design DIR, --project-design ID, --saved NAME, --software TEXT or end the "
                      "command with --fsm-config ...");
