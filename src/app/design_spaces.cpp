@@ -15,6 +15,15 @@ design::DesignSpaceRequest design_space_request(const std::string& architectures
   }
 }
 
+design::DesignSpaceRequest design_space_request(const std::vector<std::string>& architectures,
+                                                const std::vector<std::string>& flavours) {
+  try {
+    return design::request_from_names(architectures, flavours);
+  } catch (const std::invalid_argument& e) {
+    throw InvalidRequest(e.what());
+  }
+}
+
 nlohmann::json design_space_document(const std::string& architectures, const std::string& flavours) {
   design::DesignSpaceChoice choice;
   try {

@@ -1,16 +1,20 @@
 #pragma once
 // A design space as a front end asks for it: the architectures and flavours as text ("fsm,bt",
-// "chocolate,maple"; empty: the defaults), read as the CLI's flags, the web's form and Python
-// read them, with one refusal (InvalidRequest) for a bad one.
+// "chocolate,maple"; empty: the defaults) or as lists of names, read as the CLI's flags, the
+// web's form and Python read them, with one refusal (InvalidRequest) for a bad one.
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <vector>
 
 #include "design/design_space.hpp"
 
 namespace sd::app {
 
 design::DesignSpaceRequest design_space_request(const std::string& architectures, const std::string& flavours);
+/// The same from lists of names (Python's architectures=[...], flavours=[...]).
+design::DesignSpaceRequest design_space_request(const std::vector<std::string>& architectures,
+                                                const std::vector<std::string>& flavours);
 
 /// What the space holds: {"architectures", "flavours", "notes", "minimum_budget"} (the web's
 /// design form shows it as the user chooses).

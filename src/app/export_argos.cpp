@@ -64,8 +64,8 @@ argos::Experiment mission_experiment(Mission mission, const argos::ExperimentOpt
 
 argos::Experiment export_mission(const MissionExportRequest& request) {
   if (request.out.empty()) throw InvalidRequest("--out: give the .argos file to write");
-  const argos::Experiment experiment = mission_experiment(load_requested_mission(request.mission), request.options,
-                                                          request.pseudo_reality, request.sample);
+  argos::Experiment experiment = mission_experiment(load_requested_mission(request.mission), request.options,
+                                                    request.pseudo_reality, request.sample);
   // A kill while writing leaves the old file or the new one, never half an experiment.
   try {
     replace_file_durably(request.out, experiment.xml, 0644, Umask::Applies);

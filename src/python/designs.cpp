@@ -14,6 +14,7 @@
 #include "app/cancel_token.hpp"
 #include "app/design_job.hpp"
 #include "app/design_method.hpp"
+#include "app/design_spaces.hpp"
 #include "app/documents.hpp"
 #include "app/errors.hpp"
 #include "app/inputs.hpp"
@@ -49,21 +50,6 @@ class ProgressRelay final : public app::DesignObserver {
   std::optional<nlohmann::json> latest_;
 };
 
-design::DesignSpaceRequest space_request(const std::vector<std::string>& architectures, const std::vector<std::string>& flavours) {
-  design::DesignSpaceRequest request;
-  for (const auto& a : architectures) {
-    if (a == "fsm") request.fsm = true;
-    else if (a == "bt") request.bt = true;
-    else throw app::InvalidRequest("architecture '" + a + "': expected fsm or bt");
-  }
-  for (const auto& f : flavours) {
-    const auto flavour = flavour_from_name(f);
-    if (!flavour) throw app::InvalidRequest("flavour '" + f + "': expected chocolate, tuttifrutti, coconut, maple or arlequin");
-    request.flavours.push_back(*flavour);
-  }
-  return request;
-}
-
 py::object run_prepared(app::PreparedDesign& prepared, unsigned threads, const py::object& progress) {
   constexpr unsigned kMaxThreads = 1024;  // as evaluate: each worker is a thread and a simulation
   if (threads > kMaxThreads) throw app::InvalidRequest("threads: at most " + std::to_string(kMaxThreads));
@@ -89,7 +75,7 @@ py::object design(const std::string& mission, long long budget, const std::vecto
   app::NewDesignSettings settings;
   settings.mission = mission;
   settings.budget = budget;
-  settings.space = space_request(architectures, flavours);
+  settings.space = app::design_space_request(architectures, flavours);
   settings.seed = seed;
   if (!pseudo_reality_samples.empty() && pseudo_reality.empty())
     throw app::InvalidRequest("pseudo_reality_samples needs pseudo_reality");
