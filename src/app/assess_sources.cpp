@@ -13,13 +13,13 @@
 
 namespace sd::app {
 
-void add_software_to_assess(Home& home, const std::optional<storage::User>& user, const std::optional<std::string>& name,
+void add_software_to_assess(Home& home, const std::optional<storage::User>& user, const std::optional<std::string>& project_name,
                             const AssessSources& sources, std::vector<SoftwareToAssess>& out, std::string& mission) {
   std::vector<std::pair<std::string, std::string>> folders;  // label, folder
   for (const std::string& folder : sources.design_folders) folders.emplace_back(folder, folder);
   if (!sources.saved.empty() || !sources.project_designs.empty()) {  // the user's project's
     if (!user) throw InvalidRequest("saved software and project designs are a signed-in user's");
-    const storage::Project project = project_or_active(home, *user, name);
+    const storage::Project project = project_or_active(home, *user, project_name);
     if (mission.empty() && project.mission) mission = *project.mission;
     const std::vector<SavedSoftware> saved = list_saved_software(home, *user, project.name);
     for (const std::string& name : sources.saved) {
