@@ -5,6 +5,7 @@
 
 #include "app/assess_job.hpp"
 #include "app/documents/reality.hpp"
+#include "app/design_best.hpp"
 #include "app/errors.hpp"
 #include "app/inputs.hpp"
 #include "app/pseudo_realities.hpp"
@@ -83,16 +84,10 @@ std::optional<nlohmann::json> read_design_assessment(const std::filesystem::path
 nlohmann::json assess_project_design(Home& home, const storage::User& user, const std::string& project,
                                      std::int64_t design, const DesignAssessmentRequest& request,
                                      const FileScope& scope) {
-  const storage::Design d = project_design(home, user, project, design);
-  if (!d.best_config) throw NotFound("design " + std::to_string(design) + " has no best control software yet");
-  Mission mission;
-  try {
-    mission = load_requested_mission(d.mission, scope);
-  } catch (const InvalidRequest& e) {
-    throw NotFound("the mission of design " + std::to_string(design) + " cannot be loaded: " + e.what());
-  }
-  return assess_design_folder(d.folder, mission, parse_control_software(*d.best_config),
-                              "design " + std::to_string(design) + " best", request, scope);
+  // The design's best on its own mission: the rule /test, compare and export follow too.
+  const DesignBest best = design_best(home, user, project, design, scope);
+  return assess_design_folder(best.design.folder, best.mission, best.software, "design " + std::to_string(design) + " best",
+                              request, scope);
 }
 
 nlohmann::json project_design_assessment(Home& home, const storage::User& user, const std::string& project,

@@ -86,5 +86,41 @@ TEST_F(front_ends, ADesignForArgosIsOneDocumentFromTheCliAndTheWebAndItsFileIsWr
             web("argos", {{"design", 2}}));
 }
 
+// The new requests refuse bad input in one line and write nothing; the page reads only the
+// user's own files (another account's specification, a path outside, a device).
+TEST_F(front_ends, BadRequestsAreOneLineRefusalsAndThePageReadsOnlyTheUsersFiles) {
+  expect_error(run({"compare-designs", "1"}), 2, "b is required");
+  expect_error(run({"compare-designs", "1", "2", "--seeds", "9-1"}), 2, "seed");
+  expect_error(run({"test-design", "--design", "1", "--fsm-config", "--nstates", "1", "--s0", "10", "--rwm0", "50"}), 2, "not both");
+  expect_error(run({"export-argos", "--design", "2", "--sample", "3", "--out", (scratch() / "x.argos").string()}), 2,
+               "go together");
+  expect_error(run({"export-argos", "--design", "2", "--pseudo-reality", "sampled-around", "--sample", "1-3", "--out",
+                    (scratch() / "x.argos").string()}), 2, "one sample number");
+  EXPECT_FALSE(std::filesystem::exists(scratch() / "x.argos"));
+  expect_error(run({"evaluate", "--mission", "aac", "--sample", "2", "--fsm-config", "--nstates", "1", "--s0", "10", "--rwm0", "50"}), 2,
+               "go together");
+  expect_error(run({"collect", "--project", "nope"}), 1, "nope");
+
+  const auto refused = [&](const std::string& route, const json& body, int status) {
+    const Answer answer = browser_->post("/api/projects/p/" + route, body);
+    EXPECT_EQ(answer.status, status) << route << " " << body.dump() << ": " << answer.text;
+    EXPECT_EQ(answer.text.find('\n'), std::string::npos) << "one line";
+  };
+  refused("argos", {{"design", 2}, {"pseudo_reality", "/etc/passwd"}, {"sample", "1"}}, 404);
+  refused("argos", {{"design", 2}, {"pseudo_reality", "/dev/zero"}, {"sample", "1"}}, 404);
+  refused("argos", {{"design", 2}, {"pseudo_reality", "../../../../etc/hostname"}, {"sample", "1"}}, 404);
+  refused("argos", {{"design", 2}, {"pseudo_reality", "sampled-around"}, {"sample", "0"}}, 400);
+  refused("argos", {{"design", 9}}, 404);
+  refused("compare", {{"designs", {1, "2"}}}, 400);
+  refused("compare", {{"designs", {1, 2}}, {"seeds", "1-101"}}, 400);  // a page's bound: 100 seeds
+  refused("test", {{"design", "1"}}, 400);
+  // Another account's projects are not there at all.
+  run_ok({"sign-up", "eve", "--password-stdin"}, "eve-secret-pw\n");
+  WebClient eve(server_->port());
+  ASSERT_TRUE(eve.sign_in("eve", "eve-secret-pw"));
+  EXPECT_EQ(eve.post("/api/projects/p/argos", {{"design", 2}}).status, 404);
+  EXPECT_EQ(eve.post("/api/projects/p/compare", {{"designs", {1, 2}}}).status, 404);
+}
+
 }  // namespace
 }  // namespace sd::test
