@@ -69,8 +69,13 @@ test('a thesis protocol is planned with the CLI\'s choices, and nothing is recor
   const expected = JSON.parse(cli(server.env, ['experiment', 'architecture', '--missions', missions[0], '--designs', '2', '--budget-scale', '0.01',
     '--pseudo-reality', 'sampled-around', '--pseudo-reality-samples', '3', '--dry-run', '--json']));
   assert.match(summary, new RegExp(`^architecture: ${expected.designs.length} designs .*${expected.design_runs.toLocaleString('en')} design runs and ${expected.assessment_runs.toLocaleString('en')} assessment runs`));
+  // And how long it would take on the server, as the CLI's --dry-run estimates it.
+  const estimate = await page.textContent('[data-testid="exp-plan-estimate"]');
+  assert.match(estimate, /^about \d+(\.\d)? (s|min|h|days) on this server \(\d+ threads/);
+  for (const m of expected.estimate.missions) assert.ok(estimate.includes(`${m.mission}: ${m.runs.toLocaleString('en')} runs at`), estimate);
   await page.fill('#exp-reality', '');
   await page.fill('#exp-reality-samples', '');
+  await page.locator('[data-testid="exp-plan-estimate"]').scrollIntoViewIfNeeded();
   await shot(page, 'planned');
   assert.match(await page.textContent('#experiment-list'), /none yet/);
 });

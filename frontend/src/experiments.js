@@ -9,6 +9,19 @@ import { el } from './properties.js';
 
 const $ = (id) => document.getElementById(id);
 
+/// "30 s", "12 min", "3.4 h", "2.1 days": as `swarmdesign experiment --dry-run` says it.
+export function durationText(seconds) {
+  if (seconds < 120) return `${Math.round(seconds)} s`;
+  if (seconds < 2 * 3600) return `${Math.round(seconds / 60)} min`;
+  if (seconds < 3 * 86400) return `${(seconds / 3600).toFixed(1)} h`;
+  return `${(seconds / 86400).toFixed(1)} days`;
+}
+
+function estimateText(estimate) {
+  const perMission = estimate.missions.map((m) => `${m.mission}: ${m.runs.toLocaleString('en')} runs at ${(m.seconds_per_run * 1000).toFixed(2)} ms`).join(' · ');
+  return `about ${durationText(estimate.seconds)} on this server (${estimate.threads} threads, speed measured now; simulation only) — ${perMission}`;
+}
+
 export function initExperiments({ project, onChanged, onFollow }) {
   let protocols = [];
   let ownText = null;  // the user's protocol file, as read
@@ -33,7 +46,8 @@ export function initExperiments({ project, onChanged, onFollow }) {
   }
 
   function request(dryRun) {
-    const body = { dry_run: dryRun };
+    // Planning also measures how long it would take on the server (the CLI's --dry-run).
+    const body = dryRun ? { dry_run: true, estimate: true } : { dry_run: false };
     if (chosen() === 'own') {
       if (!ownText) throw new Error('choose your protocol file (JSON, as src/experiments/README.md shows)');
       body.text = ownText;
@@ -66,6 +80,7 @@ export function initExperiments({ project, onChanged, onFollow }) {
         const conditions = new Set(answer.designs.map((d) => d.condition));
         out.replaceChildren(el('div', { testid: 'exp-plan-summary',
           text: `${answer.protocol.name}: ${answer.designs.length} designs (${conditions.size} conditions × ${answer.protocol.missions.length} missions × ${answer.protocol.designs}), ${answer.design_runs.toLocaleString('en')} design runs and ${answer.assessment_runs.toLocaleString('en')} assessment runs` }),
+        el('div', { testid: 'exp-plan-estimate', text: estimateText(answer.estimate) }),
         ...answer.notes.map((n) => el('div', { class: 'muted', text: n })));
       } else {
         out.replaceChildren(el('div', { testid: 'exp-started', text: `${answer.experiment.name} ${answer.already_finished ? 'had already finished' : answer.resumed ? 'resumed' : 'started'} ${answer.where === 'slurm' ? 'as a Slurm job array' : 'on this server'}` }),

@@ -572,11 +572,35 @@ class ExperimentReport:
         return self._rows("architectures")
 
 
+_EXPERIMENT_CHOICES = ("missions", "designs", "assessment_seeds", "budget_scale", "seed", "name", "evostick",
+                       "pseudo_reality", "pseudo_reality_samples")
+
+
+def _experiment_request(protocol: Optional[str], file: Any, text: Optional[str], choices: dict[str, Any]) -> str:
+    """The request as the web's JSON body (app::protocol_request_from_json reads both)."""
+    unknown = sorted(set(choices) - set(_EXPERIMENT_CHOICES))
+    if unknown:
+        raise TypeError(f"unknown experiment choice {unknown[0]!r} (choices: {', '.join(_EXPERIMENT_CHOICES)})")
+    body: dict[str, Any] = {k: v for k, v in choices.items() if v is not None}
+    if "missions" in body:
+        body["missions"] = _names(body["missions"], "missions")
+    if body.get("pseudo_reality") is not None:
+        body["pseudo_reality"] = os.fspath(body["pseudo_reality"])
+    if protocol is not None:
+        body["protocol"] = protocol
+    if file is not None:
+        body["file"] = os.fspath(file)
+    if text is not None:
+        body["text"] = text
+    return json.dumps(body)
+
+
 class Account:
     """A SwarmDesign home as the signed-in user sees it (``swarmdesign sign-in`` made the
-    session): projects, their designs and experiments, reports. It only reads, through the
-    store every CLI command opens; test_design, compare_designs and collect run simulations
-    (collect also reaches the cluster).
+    session): projects, their designs and experiments, reports, through the store every CLI
+    command opens. Reads start nothing; test_design, compare_designs and collect run
+    simulations (collect also reaches the cluster); plan_experiment, run_experiment and
+    stop_experiment drive experiments through the backend the CLI and the page use.
     home: the SwarmDesign home (None: $SWARMDESIGN_HOME or the
     default)."""
 
@@ -631,6 +655,38 @@ class Account:
         return _core.account_argos_files(self.home, project, None if design is None else _integer(design, "design"),
                                          "" if pseudo_reality is None else os.fspath(pseudo_reality),
                                          "" if sample is None else str(_integer(sample, "sample")))
+
+    def plan_experiment(self, protocol: Optional[str] = None, *, file: Union[None, str, "os.PathLike[str]"] = None,
+                        text: Optional[str] = None, estimate: bool = False, threads: int = 0,
+                        **choices: Any) -> Any:
+        """An experiment's plan, nothing started: ``swarmdesign experiment --dry-run --json``'s
+        document and the page's Plan. ``protocol`` names a built-in one (validation,
+        combination, architecture), or give ``file`` (a protocol file) or ``text`` (its JSON).
+        ``choices`` are the CLI's flags and the page's fields: missions, designs,
+        assessment_seeds, budget_scale, seed, name, evostick, pseudo_reality,
+        pseudo_reality_samples. With estimate=True, also how long it would take here with
+        ``threads`` (0: all cores), its speed measured now."""
+        request = _experiment_request(protocol, file, text, choices)
+        return _core.account_plan_experiment(request, _threads(threads) if estimate else None)
+
+    def run_experiment(self, protocol: Optional[str] = None, *, file: Union[None, str, "os.PathLike[str]"] = None,
+                       text: Optional[str] = None, project: Optional[str] = None, threads: int = 0,
+                       progress: Optional[Callable[[dict[str, Any]], Any]] = None, **choices: Any) -> Any:
+        """Starts an experiment in the project (the active one when None) where its experiments
+        run, as ``swarmdesign experiment`` does: here, to its end (``progress`` is called with
+        the design being made), or for a cluster project as a Slurm job array (it returns once
+        submitted; :meth:`collect` brings the designs home). The same request again resumes an
+        interrupted one: Ctrl-C stops it between race steps. Returns the page's Start answer:
+        the experiment's row, resumed, already_finished, notes and where ("process" or
+        "slurm")."""
+        request = _experiment_request(protocol, file, text, choices)
+        return _core.account_run_experiment(self.home, project, request, _threads(threads), _callback(progress))
+
+    def stop_experiment(self, experiment: str, project: Optional[str] = None) -> Any:
+        """Stops a running experiment through whoever runs it (a CLI process of this machine,
+        a web server's thread, or scancel for a Slurm array); it resumes with
+        :meth:`run_experiment`."""
+        return _core.account_stop_experiment(self.home, project, experiment)
 
     def experiment_report(self, experiment: str, project: Optional[str] = None) -> ExperimentReport:
         """The experiment's report as ``swarmdesign report --json`` computes it."""

@@ -2,6 +2,8 @@
 
 #include <signal.h>
 
+#include <nlohmann/json.hpp>
+
 #include <chrono>
 #include <thread>
 
@@ -94,6 +96,17 @@ std::string stop_experiment(Home& home, const storage::User& user, const std::st
   if (p.cluster && owner && std::holds_alternative<storage::SlurmJob>(*owner)) return slurm_experiments.stop(home, user, p, e);
   if (server) return server->stop(home, user, p, e);
   return local_experiments.stop(home, user, p, e);
+}
+
+nlohmann::json launched_experiment_document(const LaunchedExperiment& launched, const nlohmann::json& row) {
+  const char* where = launched.where == ExperimentWhere::slurm    ? "slurm"
+                      : launched.where == ExperimentWhere::server ? "server"
+                                                                  : "process";
+  return {{"experiment", row},
+          {"resumed", launched.started.resumed},
+          {"already_finished", launched.started.already_finished},
+          {"notes", launched.plan.notes},
+          {"where", where}};
 }
 
 }  // namespace sd::app

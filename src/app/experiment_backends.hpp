@@ -2,6 +2,8 @@
 // The one place that chooses an experiment's backend (experiment_backend.hpp): a cluster
 // project's experiments go to Slurm, else to the server's threads when a server asks, else
 // they run in this process.
+#include <nlohmann/json_fwd.hpp>
+
 #include <string>
 
 #include "app/experiment_backend.hpp"
@@ -20,5 +22,10 @@ LaunchedExperiment launch_experiment(Home& home, const storage::User& user, cons
 /// when it does not run or runs out of reach.
 std::string stop_experiment(Home& home, const storage::User& user, const std::string& project, const std::string& name,
                             ExperimentBackend* server = nullptr);
+
+/// What a launch answers (the page's Start and Resume, Python's run_experiment): the
+/// experiment's row as experiments_document lists it, whether it resumed or had finished, the
+/// plan's notes, and where it runs ("process", "server" or "slurm").
+nlohmann::json launched_experiment_document(const LaunchedExperiment& launched, const nlohmann::json& row);
 
 }  // namespace sd::app

@@ -3,6 +3,9 @@
 // --file and flags; the web's JSON body; Python's arguments): a built-in protocol by name, a
 // protocol file, or a protocol's text, with the same overrides (missions, designs, seeds,
 // budget scale, name, pseudo-reality). The one place that turns it into a plan.
+#include <nlohmann/json_fwd.hpp>
+
+#include <optional>
 #include <string>
 
 #include "app/experiment_job.hpp"
@@ -19,6 +22,13 @@ struct ProtocolRequest {
   experiments::ProtocolOverrides overrides{};
 };
 
+/// The request as a JSON object, the one shape the web's body and Python's keywords share:
+/// {"protocol": built-in name | "file": path | "text": protocol JSON, "evostick", "missions": [..],
+///  "designs", "assessment_seeds", "budget_scale", "seed", "name", "pseudo_reality",
+///  "pseudo_reality_samples"}; absent or null fields keep the protocol's own. InvalidRequest
+/// naming the field at fault.
+ProtocolRequest protocol_request_from_json(const nlohmann::json& body);
+
 /// The protocol asked for: exactly one of builtin, file and text; InvalidRequest naming what is
 /// wrong (the protocol's own one-line errors included).
 experiments::Protocol requested_protocol(const ProtocolRequest& request, const FileScope& scope = FileScope::local());
@@ -26,5 +36,11 @@ experiments::Protocol requested_protocol(const ProtocolRequest& request, const F
 /// The protocol planned, every mission it names read under `scope` first (a server: the
 /// user's own files only).
 PlannedExperiment plan_requested_experiment(const ProtocolRequest& request, const FileScope& scope = FileScope::local());
+
+/// The plan's document (`experiment --dry-run --json`, the page's Plan, Python's
+/// plan_experiment): with `estimate_threads`, also how long it would take with that many threads
+/// (0: all cores), its speed measured now.
+nlohmann::json experiment_plan_document(const ProtocolRequest& request, const FileScope& scope,
+                                        std::optional<unsigned> estimate_threads);
 
 }  // namespace sd::app

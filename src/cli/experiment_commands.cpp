@@ -155,10 +155,6 @@ void print_submission(app::Home& home, const storage::User& user, const app::Clu
 void print_estimate(const app::PlannedExperiment& plan, const ExperimentOptions& o) {
   for (const auto& note : plan.notes) std::cerr << "swarmdesign: note: " << note << "\n";
   const app::DurationEstimate estimate = app::estimate_duration(plan, o.threads);
-  if (o.json) {
-    std::cout << app::plan_document(plan, &estimate).dump(2) << "\n";
-    return;
-  }
   print_plan(plan);
   std::cout << "On this machine (" << estimate.threads << " threads, speed measured now):\n";
   for (const auto& m : estimate.missions)
@@ -168,6 +164,13 @@ void print_estimate(const app::PlannedExperiment& plan, const ExperimentOptions&
 }
 
 void run_experiment_command(const ExperimentOptions& o) {
+  if (o.dry_run && o.json) {
+    // The document the page's Plan and Python's plan_experiment answer (app::experiment_plan_document).
+    const nlohmann::json plan = app::experiment_plan_document(protocol_request(o), app::FileScope::local(), o.threads);
+    for (const auto& note : plan.at("notes")) std::cerr << "swarmdesign: note: " << note.get<std::string>() << "\n";
+    std::cout << plan.dump(2) << "\n";
+    return;
+  }
   if (o.dry_run) return print_estimate(app::plan_requested_experiment(protocol_request(o)), o);
   // Where it runs is the project's experiment backend's (a cluster project's: a Slurm array).
   const app::LaunchedExperiment launched = [&] {

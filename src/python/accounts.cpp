@@ -1,24 +1,31 @@
 // A SwarmDesign home read from Python as the signed-in user sees it (the session that
 // `swarmdesign sign-in` left): projects, their designs (rows and folders), experiments' progress
-// and reports, the documents `--json` prints. Nothing here starts, stops or deletes anything.
+// and reports, the documents `--json` prints; experiments planned, run (in this process, or for a
+// cluster project as a Slurm array) and stopped through the backend the CLI and the page use.
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
 #include <filesystem>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 
 #include "app/accounts.hpp"
 #include "app/documents.hpp"
+#include "app/errors.hpp"
+#include "app/cancel_token.hpp"
 #include "app/cluster_experiments.hpp"
+#include "app/experiment_backends.hpp"
 #include "app/experiment_job.hpp"
 #include "app/experiment_report.hpp"
 #include "app/export_argos.hpp"
 #include "app/home.hpp"
 #include "app/projects.hpp"
+#include "app/protocol_requests.hpp"
 #include "app/test_design.hpp"
 #include "python/bindings.hpp"
+#include "python/interruptible.hpp"
 #include "python/json_objects.hpp"
 
 namespace sd::python {
@@ -97,6 +104,92 @@ py::object argos_files(const std::optional<std::string>& home_folder, const std:
   return to_python(app::argos_files(*home, app::signed_in_user(*home), request));
 }
 
+// An experiment's request is the web's JSON body, as text (app::protocol_request_from_json):
+// Python builds it from its keywords, so the three front ends fill one request.
+app::ProtocolRequest protocol_request(const std::string& request_json) {
+  const nlohmann::json body = nlohmann::json::parse(request_json, nullptr, false);
+  if (body.is_discarded()) throw app::InvalidRequest("the experiment request is not JSON");
+  return app::protocol_request_from_json(body);
+}
+
+py::object plan_experiment(const std::string& request_json, std::optional<unsigned> estimate_threads) {
+  const app::ProtocolRequest request = protocol_request(request_json);
+  const nlohmann::json doc = [&] {
+    py::gil_scoped_release free;  // the estimate simulates
+    return app::experiment_plan_document(request, app::FileScope::local(), estimate_threads);
+  }();
+  return to_python(doc);
+}
+
+/// Hands the experiment's progress from its thread to the Python thread that polls.
+class ExperimentRelay final : public app::ExperimentObserver {
+ public:
+  void design_started(const storage::ExperimentDesign& d, int index, int total) override {
+    const std::lock_guard lock(mutex_);
+    now_ = {{"design", index}, {"designs", total}, {"mission", app::mission_label(d.plan.mission)},
+            {"condition", d.plan.condition}, {"replicate", d.plan.replicate}, {"stage", "designing"}};
+    fresh_ = true;
+  }
+  void design_progress(std::int64_t runs_used, std::int64_t budget, double best_score) override {
+    const std::lock_guard lock(mutex_);
+    now_["runs_used"] = runs_used;
+    now_["budget"] = budget;
+    now_["best_score"] = best_score;
+    fresh_ = true;
+  }
+  void assessing(std::size_t done, std::size_t all) override {
+    const std::lock_guard lock(mutex_);
+    now_["stage"] = "assessing";
+    now_["assessed"] = done;
+    now_["to_assess"] = all;
+    fresh_ = true;
+  }
+  std::optional<nlohmann::json> take() {
+    const std::lock_guard lock(mutex_);
+    if (!fresh_) return std::nullopt;
+    fresh_ = false;
+    return now_;
+  }
+
+ private:
+  std::mutex mutex_;
+  nlohmann::json now_ = nlohmann::json::object();
+  bool fresh_ = false;
+};
+
+// Started (or resumed) where the project's experiments run: this process, or a Slurm array for
+// a cluster project (app::launch_experiment, as `swarmdesign experiment`). Here it runs to its
+// end; Ctrl-C stops it between race steps, and the same call resumes it.
+py::object run_experiment(const std::optional<std::string>& home_folder, const std::optional<std::string>& project,
+                          const std::string& request_json, unsigned threads, const py::object& progress) {
+  auto home = open_home(home_folder);
+  const storage::User user = app::signed_in_user(*home);
+  app::LaunchedExperiment launched =
+      app::launch_experiment(*home, user, {protocol_request(request_json), project, app::FileScope::local(), {}, threads});
+  if (launched.where == app::ExperimentWhere::this_process && !launched.started.already_finished) {
+    ExperimentRelay relay;
+    app::CancelToken token;
+    run_interruptibly(
+        [&] { app::run_experiment(launched.started, {.threads = threads, .evaluator = nullptr, .observer = &relay, .cancel = &token}); },
+        [&] { token.cancel(); },
+        [&] {
+          if (auto now = relay.take(); now && !progress.is_none()) progress(to_python(*now));
+        });
+  }
+  const std::string& name = launched.started.experiment.name;
+  for (const nlohmann::json& row : app::experiments_document(app::experiments_progress(*home, user, launched.started.project.name)))
+    if (row.at("name") == name) return to_python(app::launched_experiment_document(launched, row));
+  throw app::NotFound("experiment " + name + " vanished");
+}
+
+py::object stop_experiment(const std::optional<std::string>& home_folder, const std::optional<std::string>& project,
+                           const std::string& name) {
+  auto home = open_home(home_folder);
+  const storage::User user = app::signed_in_user(*home);
+  const storage::Project p = app::project_or_active(*home, user, project);
+  return to_python(nlohmann::json{{"stopping", app::stop_experiment(*home, user, p.name, name)}});
+}
+
 py::object experiment_report(const std::string& experiment, const std::optional<std::string>& home_folder,
                              const std::optional<std::string>& project) {
   auto home = open_home(home_folder);
@@ -119,6 +212,12 @@ void bind_accounts(py::module_& m) {
         py::arg("seeds"), py::arg("threads"), "Two designs' bests on the same seeds (`compare-designs --json`).");
   m.def("account_argos_files", &argos_files, py::arg("home"), py::arg("project"), py::arg("design"),
         py::arg("pseudo_reality"), py::arg("sample"), "A design for ARGoS3-AutoMoDe (`export-argos --json`).");
+  m.def("account_plan_experiment", &plan_experiment, py::arg("request"), py::arg("estimate_threads"),
+        "An experiment's plan (`experiment --dry-run --json`); with estimate_threads, its time here.");
+  m.def("account_run_experiment", &run_experiment, py::arg("home"), py::arg("project"), py::arg("request"),
+        py::arg("threads"), py::arg("progress"), "Starts or resumes an experiment where the project runs them.");
+  m.def("account_stop_experiment", &stop_experiment, py::arg("home"), py::arg("project"), py::arg("name"),
+        "Stops an experiment through whoever runs it (`POST .../experiments/NAME/stop`).");
   m.def("experiment_report", &experiment_report, py::arg("experiment"), py::arg("home") = py::none(),
         py::arg("project") = py::none(), "An experiment's report document, as `report --json` computes it.");
 }

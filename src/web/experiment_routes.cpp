@@ -7,7 +7,6 @@
 #include "app/errors.hpp"
 #include "app/experiment_backends.hpp"
 #include "app/experiment_job.hpp"
-#include "app/inputs.hpp"
 #include "app/user_files.hpp"
 #include "experiments/protocol.hpp"
 #include "app/experiment_report.hpp"
@@ -20,46 +19,6 @@ namespace sd::web {
 namespace {
 
 using nlohmann::json;
-
-/// The body as the one protocol request every front end fills (app/protocol_requests.hpp): a
-/// built-in protocol by name or the user's own (its JSON text), with the choices the CLI's
-/// flags give. InvalidRequest naming the field at fault.
-app::ProtocolRequest protocol_request(const json& body) {
-  app::ProtocolRequest r;
-  if (body.contains("text") && !body.at("text").is_null()) r.text = text_field(body, "text");
-  else r.builtin = body.contains("protocol") ? text_field(body, "protocol") : "";
-  if (body.contains("evostick") && !body.at("evostick").is_null()) {
-    if (!body.at("evostick").is_boolean()) throw app::InvalidRequest("evostick must be true or false");
-    r.evostick = body.at("evostick").get<bool>() && r.text.empty();
-  }
-  experiments::ProtocolOverrides& o = r.overrides;
-  if (body.contains("missions") && !body.at("missions").is_null()) {
-    if (!body.at("missions").is_array()) throw app::InvalidRequest("missions must be a list of mission names");
-    o.missions.emplace();
-    for (const json& m : body.at("missions")) {
-      if (!m.is_string()) throw app::InvalidRequest("missions must be a list of mission names");
-      o.missions->push_back(m.get<std::string>());
-    }
-  }
-  const auto integer = [&](const char* key) -> std::optional<int> {
-    if (!body.contains(key) || body.at(key).is_null()) return std::nullopt;
-    if (!body.at(key).is_number_integer()) throw app::InvalidRequest(std::string(key) + " must be a whole number");
-    return body.at(key).get<int>();
-  };
-  o.designs = integer("designs");
-  o.assessment_seeds = integer("assessment_seeds");
-  if (body.contains("budget_scale") && !body.at("budget_scale").is_null()) {
-    if (!body.at("budget_scale").is_number()) throw app::InvalidRequest("budget_scale must be a number");
-    o.budget_scale = body.at("budget_scale").get<double>();
-  }
-  if (body.contains("seed") && !body.at("seed").is_null()) o.seed = app::parse_seed(text_field(body, "seed"));
-  if (body.contains("name") && !body.at("name").is_null() && !text_field(body, "name").empty()) o.name = text_field(body, "name");
-  // Every final design also assessed in a pseudo-reality (experiment --pseudo-reality).
-  if (body.contains("pseudo_reality") && !body.at("pseudo_reality").is_null() && !text_field(body, "pseudo_reality").empty())
-    o.pseudo_reality = text_field(body, "pseudo_reality");
-  o.pseudo_reality_samples = integer("pseudo_reality_samples");
-  return r;
-}
 
 /// The project's experiments, each saying whether this server runs it.
 json experiments_list(Call& call, const std::string& project) {
@@ -80,8 +39,7 @@ json launched_document(Call& call, const app::ProtocolRequest& protocol) {
   const app::StartedExperiment& started = launched.started;
   for (const json& e : experiments_list(call, started.project.name))
     if (e.at("name") == started.experiment.name)
-      return {{"experiment", e}, {"resumed", started.resumed}, {"already_finished", started.already_finished},
-              {"notes", launched.plan.notes}, {"where", launched.where == app::ExperimentWhere::slurm ? "slurm" : "server"}};
+      return app::launched_experiment_document(launched, e);
   throw app::NotFound("experiment " + started.experiment.name + " vanished");
 }
 
@@ -100,13 +58,17 @@ void add_experiment_routes(Routes& routes) {
 
   routes.get(project + "/experiments", [](Call& call) { return experiments_list(call, call.match(1)); });
 
-  // `swarmdesign experiment` from the page: planned (dry_run: only that), recorded and run where
+  // `swarmdesign experiment` from the page: planned (dry_run: only that; with estimate, also how
+// long it would take on this server's threads, measured now), recorded and run where
   // the project's experiments run; the same name and protocol again resumes an interrupted one.
   routes.post(project + "/experiments", [](Call& call) -> json {
-    const app::ProtocolRequest request = protocol_request(call.body);
-    if (call.body.contains("dry_run") && call.body.at("dry_run").is_boolean() && call.body.at("dry_run").get<bool>())
-      return app::plan_document(app::plan_requested_experiment(request, app::FileScope::own_projects(call.home, call.user)),
-                                nullptr);
+    const app::ProtocolRequest request = app::protocol_request_from_json(call.body);
+    const auto flag = [&](const char* key) {
+      return call.body.contains(key) && call.body.at(key).is_boolean() && call.body.at(key).get<bool>();
+    };
+    if (flag("dry_run"))
+      return app::experiment_plan_document(request, app::FileScope::own_projects(call.home, call.user),
+                                           flag("estimate") ? std::optional<unsigned>(0) : std::nullopt);
     return launched_document(call, request);
   });
 

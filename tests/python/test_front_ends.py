@@ -103,3 +103,51 @@ def test_a_robust_design_is_the_clis(account, tmp_path):
 
 def account_folder(account):
     return Path(os.environ["SWARMDESIGN_HOME"]) / "users" / "py-front" / "projects"
+
+
+def mini_protocol(account, name):
+    mission = next((account_folder(account) / "fe").glob("aac-short.json"))
+    return json.dumps({"name": name, "designs": 2, "assessment_seeds": 3, "missions": [
+        {"mission": str(mission), "budget": 1008,
+         "conditions": [{"name": "alone", "architectures": ["fsm"], "flavours": ["chocolate"]}]}]})
+
+
+def test_an_experiments_plan_is_the_clis_document(account, tmp_path):
+    planned = account.plan_experiment("validation", missions=["aac"], designs=3, seed=5, budget_scale=0.01)
+    cli = json.loads(run_cli("experiment", "validation", "--missions", "aac", "--designs", 3, "--seed", 5,
+                             "--budget-scale", 0.01, "--dry-run", "--json", "--threads", 1))
+    assert "estimate" not in planned
+    cli_estimate = cli.pop("estimate")  # measured now: the rest is the same bit for bit
+    assert planned == cli
+    assert len(planned["designs"]) == 3 * len({d["condition"] for d in planned["designs"]})
+    estimated = account.plan_experiment("validation", missions=["aac"], designs=3, seed=5, budget_scale=0.01,
+                                        estimate=True, threads=1)
+    assert estimated.pop("estimate")["missions"][0]["runs"] == cli_estimate["missions"][0]["runs"]
+    assert estimated == planned
+    own = tmp_path / "mini.json"
+    own.write_text(mini_protocol(account, "from-file"))
+    assert account.plan_experiment(file=own) == account.plan_experiment(text=own.read_text())
+    with pytest.raises(sd.InvalidRequestError, match="not both"):
+        account.plan_experiment("validation", text=own.read_text())
+    with pytest.raises(sd.InvalidRequestError, match="designs must be a whole number"):
+        account.plan_experiment("validation", designs="many")
+    with pytest.raises(TypeError, match="unknown experiment choice 'budget'"):
+        account.plan_experiment("validation", budget=10)
+
+
+def test_an_experiment_runs_from_python_reports_as_the_clis_and_resumes(account):
+    steps = []
+    started = account.run_experiment(text=mini_protocol(account, "py-mini"), threads=2, progress=steps.append)
+    assert started["where"] == "process" and not started["resumed"] and not started["already_finished"]
+    assert started["experiment"]["state"] == "finished" and started["experiment"]["designs_done"] == 2
+    assert steps and steps[-1]["mission"] == "aac-short" and steps[-1]["condition"] == "alone"
+    # The same request again: it had finished, so it is answered, not run twice.
+    again = account.run_experiment(text=mini_protocol(account, "py-mini"))
+    assert again["already_finished"] and again["experiment"] == started["experiment"]
+    report = account.experiment_report("py-mini")
+    assert report.document == json.loads(run_cli("report", "py-mini", "--json"))
+    # Nothing runs it now: stopping says so, as the page's Stop does.
+    with pytest.raises(sd.ConflictError):
+        account.stop_experiment("py-mini")
+    with pytest.raises(sd.NotFoundError):
+        account.stop_experiment("no-such-experiment")

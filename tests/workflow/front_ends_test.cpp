@@ -88,6 +88,27 @@ TEST_F(front_ends, ADesignForArgosIsOneDocumentFromTheCliAndTheWebAndItsFileIsWr
 
 // The new requests refuse bad input in one line and write nothing; the page reads only the
 // user's own files (another account's specification, a path outside, a device).
+TEST_F(front_ends, AnExperimentsPlanIsOneDocumentFromTheCliAndTheWeb) {
+  json cli = json::parse(run_ok({"experiment", "validation", "--missions", "aac", "--designs", "3", "--seed", "5",
+                                 "--budget-scale", "0.01", "--dry-run", "--json", "--threads", "1"}));
+  const json request = {{"protocol", "validation"}, {"missions", {"aac"}}, {"designs", 3}, {"seed", "5"},
+                        {"budget_scale", 0.01}, {"dry_run", true}};
+  const json cli_estimate = cli["estimate"];  // measured now: only its runs are the same
+  cli.erase("estimate");
+  EXPECT_EQ(cli, web("experiments", request));
+  // The page's Plan asks for the estimate too: the same runs, timed on the server's threads.
+  json estimated = request;
+  estimated["estimate"] = true;
+  json page = web("experiments", estimated);
+  ASSERT_TRUE(page.contains("estimate")) << page.dump();
+  EXPECT_EQ(page["estimate"]["missions"][0]["runs"], cli_estimate["missions"][0]["runs"]);
+  EXPECT_GT(page["estimate"]["seconds"].get<double>(), 0.0);
+  page.erase("estimate");
+  EXPECT_EQ(cli, page);
+  // Nothing was started by planning.
+  EXPECT_EQ(browser_->get("/api/projects/p/experiments").body, json::array());
+}
+
 TEST_F(front_ends, BadRequestsAreOneLineRefusalsAndThePageReadsOnlyTheUsersFiles) {
   expect_error(run({"compare-designs", "1"}), 2, "b is required");
   expect_error(run({"compare-designs", "1", "2", "--seeds", "9-1"}), 2, "seed");
@@ -114,6 +135,13 @@ TEST_F(front_ends, BadRequestsAreOneLineRefusalsAndThePageReadsOnlyTheUsersFiles
   refused("compare", {{"designs", {1, "2"}}}, 400);
   refused("compare", {{"designs", {1, 2}}, {"seeds", "1-101"}}, 400);  // a page's bound: 100 seeds
   refused("test", {{"design", "1"}}, 400);
+  // An experiment's protocol file (the field Python's plan_experiment(file=...) fills) is read
+  // only from the user's own projects, and a refusal leaks nothing of what is elsewhere.
+  refused("experiments", {{"file", "/etc/passwd"}, {"dry_run", true}}, 404);
+  refused("experiments", {{"file", "/dev/zero"}, {"dry_run", true}}, 404);
+  refused("experiments", {{"file", "../../../../etc/hostname"}, {"dry_run", true}}, 404);
+  refused("experiments", {{"protocol", "validation"}, {"designs", "3"}, {"dry_run", true}}, 400);
+  refused("experiments", {{"protocol", "validation"}, {"text", "{}"}, {"dry_run", true}}, 400);
   // Another account's projects are not there at all.
   run_ok({"sign-up", "eve", "--password-stdin"}, "eve-secret-pw\n");
   WebClient eve(server_->port());
