@@ -54,7 +54,8 @@ __all__ = [
     "AccessDeniedError", "Account", "Assessment", "assess", "ConfigError", "ConflictError", "ControlSoftware", "Design",
     "DesignFolderError", "DesignResult", "ExperimentReport", "ExportError", "FLAVOURS",
     "InvalidRequestError", "MAX_SEEDS", "MAX_SEED_BOUND", "MAX_THREADS", "Mission", "MissionError", "NotFoundError",
-    "SwarmDesignError", "Trace", "design", "evaluate", "missions", "module_catalogue",
+    "SwarmDesignError", "Trace", "design", "evaluate", "missions", "module_catalogue", "pseudo_realities",
+    "pseudo_reality_samples",
     "resume_design", "trace",
 ]
 
@@ -504,6 +505,19 @@ def assess(mission: MissionLike, software: Any, pseudo_reality: str = "sampled-a
     document = _core.assess(_mission(mission), _labelled(software), os.fspath(pseudo_reality), _samples(samples),
                             _seeds(seeds), _threads(threads), _callback(progress))
     return Assessment(document)
+
+
+def pseudo_realities() -> list[dict[str, Any]]:
+    """The shipped pseudo-reality specifications (name, description, source, digest, the knobs
+    each varies): ``swarmdesign pseudo-realities --json`` and the page's list."""
+    return _core.pseudo_realities()
+
+
+def pseudo_reality_samples(pseudo_reality: Union[str, "os.PathLike[str]"], samples: str = "1-5",
+                           mission: Union[str, "os.PathLike[str]"] = "aac") -> dict[str, Any]:
+    """A specification's samples as robot models (every knob by its file name) beside the
+    design model of ``mission``'s robot: ``swarmdesign pseudo-realities NAME --json``."""
+    return _core.pseudo_reality_samples(os.fspath(pseudo_reality), os.fspath(mission), str(samples))
 
 
 # ---- experiments and accounts ----------------------------------------------------------

@@ -1,5 +1,8 @@
 #include "app/pseudo_realities.hpp"
 
+#include <nlohmann/json.hpp>
+
+#include "app/documents/reality.hpp"
 #include "app/errors.hpp"
 #include "app/inputs.hpp"
 
@@ -52,6 +55,32 @@ Mission in_requested_sample(Mission mission, const std::string& pseudo_reality, 
   const std::vector<std::uint64_t> k = parse_sample_range(sample);
   if (k.size() != 1) throw InvalidRequest("--sample: one sample number, not a range");
   return in_pseudo_reality(mission, load_requested_pseudo_reality(pseudo_reality, scope).spec, k.front());
+}
+
+nlohmann::json pseudo_realities_document() {
+  nlohmann::json list = nlohmann::json::array();
+  for (const BuiltinPseudoReality& b : builtin_pseudo_realities()) {
+    const NamedPseudoReality named = load_requested_pseudo_reality(std::string(b.name));
+    list.push_back({{"name", named.reference},
+                    {"description", named.spec.description},
+                    {"source", named.spec.source},
+                    {"digest", named.spec.digest},
+                    {"varies", named.spec.varies()}});
+  }
+  return list;
+}
+
+nlohmann::json pseudo_reality_samples_document(const std::string& name_or_path, const std::string& mission_name,
+                                               const std::string& samples, const FileScope& scope) {
+  const Mission mission = load_requested_mission(mission_name, scope);
+  const NamedPseudoReality named = load_requested_pseudo_reality(name_or_path, scope);
+  nlohmann::json rows = nlohmann::json::array();
+  for (const std::uint64_t k : parse_sample_range(samples))
+    rows.push_back({{"sample", k}, {"robot", robot_model_document(named.spec.sample(mission.robot, k))}});
+  return {{"name", named.reference},
+          {"digest", named.spec.digest},
+          {"design_model", robot_model_document(mission.robot)},
+          {"samples", rows}};
 }
 
 }  // namespace sd::app

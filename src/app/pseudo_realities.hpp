@@ -2,6 +2,8 @@
 // The pseudo-realities a user names (Ligot & Birattari 2020; reality/pseudo_reality.hpp): a
 // shipped specification by name, or a specification file under app/user_files' one rule; and
 // the sample numbers they ask for.
+#include <nlohmann/json_fwd.hpp>
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -33,5 +35,13 @@ Mission in_pseudo_reality(const Mission& mission, const PseudoRealitySpec& spec,
 /// `scope`); unchanged when both are empty. InvalidRequest when only one is given, or for a range.
 Mission in_requested_sample(Mission mission, const std::string& pseudo_reality, const std::string& sample,
                             const FileScope& scope = FileScope::local());
+
+/// The shipped pseudo-realities, one row each: name, description, source, digest and the knobs
+/// it varies (`pseudo-realities --json`, `GET /api/pseudo-realities`, `sd.pseudo_realities()`).
+nlohmann::json pseudo_realities_document();
+/// A specification's samples (`samples` as parse_sample_range reads it) as robot models beside
+/// the design model of `mission`'s robot (`pseudo-realities NAME --json`, `sd.pseudo_reality_samples`).
+nlohmann::json pseudo_reality_samples_document(const std::string& name_or_path, const std::string& mission,
+                                               const std::string& samples, const FileScope& scope = FileScope::local());
 
 }  // namespace sd::app

@@ -164,22 +164,14 @@ void register_pseudo_realities(CLI::App& app) {
   cmd->footer("Example: swarmdesign pseudo-realities sampled-around --samples 1-3");
   cmd->callback([o] {
     if (o->name.empty()) {
-      nlohmann::json list = nlohmann::json::array();
-      for (const BuiltinPseudoReality& b : builtin_pseudo_realities()) {
-        const app::NamedPseudoReality spec = app::load_requested_pseudo_reality(std::string(b.name));
-        list.push_back({{"name", spec.reference}, {"description", spec.spec.description}, {"varies", spec.spec.varies()}});
-        if (!o->json) std::printf("%-22s %s\n", std::string(b.name).c_str(), spec.spec.description.c_str());
-      }
+      const nlohmann::json list = app::pseudo_realities_document();
       if (o->json) std::cout << list.dump(2) << "\n";
+      else
+        for (const auto& row : list)
+          std::printf("%-22s %s\n", row.at("name").get<std::string>().c_str(), row.at("description").get<std::string>().c_str());
       return;
     }
-    const Mission mission = app::load_requested_mission(o->mission);
-    const app::NamedPseudoReality spec = app::load_requested_pseudo_reality(o->name);
-    nlohmann::json doc = {{"name", spec.reference}, {"digest", spec.spec.digest}, {"design_model", app::robot_model_document(mission.robot)}};
-    nlohmann::json samples = nlohmann::json::array();
-    for (const std::uint64_t k : app::parse_sample_range(o->samples))
-      samples.push_back({{"sample", k}, {"robot", app::robot_model_document(spec.spec.sample(mission.robot, k))}});
-    doc["samples"] = samples;
+    const nlohmann::json doc = app::pseudo_reality_samples_document(o->name, o->mission, o->samples);
     std::cout << doc.dump(2) << "\n";
   });
 }

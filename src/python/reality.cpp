@@ -68,6 +68,12 @@ void bind_reality(py::module_& m) {
         "The assessment document of `swarmdesign assess --json` (app::assess).");
   m.def("parse_sample_range", &app::parse_sample_range, py::arg("text"),
         "Pseudo-reality samples \"K\" or \"A-B\", read as `assess --samples` reads them.");
+  m.def("pseudo_realities", [] { return to_python(app::pseudo_realities_document()); },
+        "The shipped pseudo-realities (`pseudo-realities --json`).");
+  m.def("pseudo_reality_samples", [](const std::string& name_or_path, const std::string& mission, const std::string& samples) {
+          return to_python(app::pseudo_reality_samples_document(name_or_path, mission, samples));
+        }, py::arg("name_or_path"), py::arg("mission"), py::arg("samples"),
+        "A specification's samples beside the design model (`pseudo-realities NAME --json`).");
   m.def("pseudo_reality_document", [](const std::string& name_or_path) {
           const app::NamedPseudoReality spec = app::load_requested_pseudo_reality(name_or_path);
           py::dict out;

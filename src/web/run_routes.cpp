@@ -30,15 +30,7 @@ std::uint64_t sample_number(const nlohmann::json& body) {
 
 void add_run_routes(Routes& routes) {
   // The shipped pseudo-realities (reality/pseudo_reality.hpp), for the pages' choices.
-  routes.get("/api/pseudo-realities", [](Call&) {
-    nlohmann::json list = nlohmann::json::array();
-    for (const BuiltinPseudoReality& b : builtin_pseudo_realities()) {
-      const PseudoRealitySpec spec = parse_pseudo_reality(std::string(b.json), std::string(b.name));
-      list.push_back({{"name", b.name}, {"description", spec.description}, {"source", spec.source},
-                      {"digest", spec.digest}, {"varies", spec.varies()}});
-    }
-    return list;
-  });
+  routes.get("/api/pseudo-realities", [](Call&) { return app::pseudo_realities_document(); });
 
   routes.post("/api/runs", [](Call& call) -> nlohmann::json {
     ControlSoftware software = parse_control_software(text_field(call.body, "text"));

@@ -151,3 +151,16 @@ def test_an_experiment_runs_from_python_reports_as_the_clis_and_resumes(account)
         account.stop_experiment("py-mini")
     with pytest.raises(sd.NotFoundError):
         account.stop_experiment("no-such-experiment")
+
+
+def test_the_pseudo_realities_are_the_clis_documents(account):
+    listed = sd.pseudo_realities()
+    assert listed == json.loads(run_cli("pseudo-realities", "--json"))
+    assert {"iridia-transfer", "tuttifrutti-transfer", "sampled-around"} <= {row["name"] for row in listed}
+    varies = {row["name"]: row["varies"] for row in listed if row["digest"]}
+    assert varies["sampled-around"] and not varies["iridia-transfer"]  # one fixed model, every sample alike
+    samples = sd.pseudo_reality_samples("sampled-around", "2-3", mission="foraging")
+    assert samples == json.loads(run_cli("pseudo-realities", "sampled-around", "--samples", "2-3", "--mission", "foraging", "--json"))
+    assert [s["sample"] for s in samples["samples"]] == [2, 3]
+    with pytest.raises(sd.InvalidRequestError):
+        sd.pseudo_reality_samples("sampled-around", "3-1")
