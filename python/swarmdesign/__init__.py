@@ -670,6 +670,23 @@ class Account:
                                          "" if pseudo_reality is None else os.fspath(pseudo_reality),
                                          "" if sample is None else str(_integer(sample, "sample")))
 
+    def assess(self, designs: Union[int, Iterable[int]] = (), saved: Union[str, Iterable[str]] = (),
+               pseudo_reality: Union[str, "os.PathLike[str]"] = "sampled-around",
+               samples: Union[int, str, Iterable[int]] = "1-20", seeds: SeedsLike = "1-10", elites: bool = False,
+               mission: Optional[MissionLike] = None, project: Optional[str] = None, threads: int = 0,
+               progress: Optional[Callable[[int, int], Any]] = None) -> Assessment:
+        """The project's designs (their bests; every final elite with ``elites``) and saved
+        software across the reality gap, as ``swarmdesign assess --project-design N --saved
+        NAME --json`` does, in the project's mission unless ``mission`` is given."""
+        _check_fork()
+        numbers = [designs] if isinstance(designs, int) else list(designs)
+        names = [saved] if isinstance(saved, str) else list(saved)
+        document = _core.account_assess(self.home, project, [_integer(d, "designs") for d in numbers], names, bool(elites),
+                                        "" if mission is None else _mission_reference(mission),
+                                        os.fspath(pseudo_reality), _samples(samples), _seeds(seeds), _threads(threads),
+                                        _callback(progress))
+        return Assessment(document)
+
     def plan_experiment(self, protocol: Optional[str] = None, *, file: Union[None, str, "os.PathLike[str]"] = None,
                         text: Optional[str] = None, estimate: bool = False, threads: int = 0,
                         **choices: Any) -> Any:

@@ -77,15 +77,7 @@ void print_assessment(const app::Assessment& a) {
 void write_csv(const app::Assessment& a, const std::string& path) {
   std::ofstream out(path);
   if (!out) throw std::runtime_error("cannot write " + path);
-  out << "software,world,sample,seed,score\n";
-  for (const auto& s : a.software) {
-    const std::string label = "\"" + s.label + "\"";
-    for (std::size_t j = 0; j < a.seeds.size(); ++j) out << label << ",design,0," << a.seeds[j] << "," << s.design_scores[j] << "\n";
-    for (std::size_t k = 0; k < a.samples.size(); ++k)
-      for (std::size_t j = 0; j < a.seeds.size(); ++j)
-        out << label << ",pseudo-reality," << a.samples[k] << "," << a.seeds[j] << ","
-            << s.reality_scores[k * a.seeds.size() + j] << "\n";
-  }
+  out << app::assessment_csv(a);
 }
 
 void register_assess(CLI::App& app, Context& context) {

@@ -164,3 +164,17 @@ def test_the_pseudo_realities_are_the_clis_documents(account):
     assert [s["sample"] for s in samples["samples"]] == [2, 3]
     with pytest.raises(sd.InvalidRequestError):
         sd.pseudo_reality_samples("sampled-around", "3-1")
+
+
+def test_assessing_a_projects_designs_is_the_clis_document(account):
+    here = account.assess(designs=[1, 2], pseudo_reality="sampled-around", samples="1-2", seeds="1-3", threads=2)
+    cli = json.loads(run_cli("assess", "--project-design", 1, "--project-design", 2, "--pseudo-reality", "sampled-around",
+                             "--samples", "1-2", "--seeds", "1-3", "--json", "--threads", 2))
+    for document in (here.document, cli):
+        document.pop("seconds")  # each one's own wall time
+    assert here.document == cli
+    assert [s["label"] for s in cli["software"]] == ["design 1 best", "design 2 best"]
+    with pytest.raises(sd.NotFoundError):
+        account.assess(designs=9)
+    with pytest.raises(sd.InvalidRequestError, match="nothing to assess"):
+        account.assess()

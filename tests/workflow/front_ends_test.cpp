@@ -109,6 +109,37 @@ TEST_F(front_ends, AnExperimentsPlanIsOneDocumentFromTheCliAndTheWeb) {
   EXPECT_EQ(browser_->get("/api/projects/p/experiments").body, json::array());
 }
 
+TEST_F(front_ends, AnAssessmentOfADesignIsOneDocumentFromTheCliAndTheWeb) {
+  json cli = json::parse(run_ok({"assess", "--project-design", "2", "--pseudo-reality", "sampled-around", "--samples",
+                                 "1-2", "--seeds", "1-3", "--json"}));
+  json page = web("designs/2/assessment", {{"pseudo_reality", "sampled-around"}, {"samples", "1-2"}, {"seeds", "1-3"}});
+  ASSERT_TRUE(page.contains("request")) << page.dump();
+  page.erase("request");  // the page keeps what it asked for beside the design
+  cli.erase("seconds");   // each one's own wall time
+  page.erase("seconds");
+  EXPECT_EQ(cli, page);
+  ASSERT_EQ(cli["software"].size(), 1u);
+  EXPECT_EQ(cli["software"][0]["runs"].size(), 3u * (1u + 2u)) << cli["software"][0].dump();
+  // Its CSV (app::assessment_csv): one row per run, with the JSON's scores.
+  const auto csv = scratch() / "assess.csv";
+  run_ok({"assess", "--project-design", "2", "--pseudo-reality", "sampled-around", "--samples", "1-2", "--seeds", "1-3",
+          "--csv", csv.string()});
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "software,world,sample,seed,score");
+  for (const json& run : cli["software"][0]["runs"]) {
+    ASSERT_TRUE(std::getline(in, line));
+    const bool design = run["sample"] == 0;
+    std::ostringstream want;
+    want.precision(17);
+    want << "\"design 2 best\"," << (design ? "design" : "pseudo-reality") << "," << run["sample"].get<int>() << ","
+         << run["seed"].get<int>() << "," << run["score"].get<double>();
+    EXPECT_EQ(line, want.str());
+  }
+  EXPECT_FALSE(std::getline(in, line)) << line;
+}
+
 TEST_F(front_ends, BadRequestsAreOneLineRefusalsAndThePageReadsOnlyTheUsersFiles) {
   expect_error(run({"compare-designs", "1"}), 2, "b is required");
   expect_error(run({"compare-designs", "1", "2", "--seeds", "9-1"}), 2, "seed");

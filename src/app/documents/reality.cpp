@@ -1,6 +1,7 @@
 #include "app/documents/reality.hpp"
 
 #include <cmath>
+#include <sstream>
 
 namespace sd::app {
 
@@ -55,6 +56,21 @@ json assessment_document(const Assessment& a) {
           {"seconds", a.seconds},
           {"reference", "Ligot & Birattari, Simulation-only experiments to mimic the effects of the reality gap in the "
                         "automatic design of robot swarms, Swarm Intelligence 14, 2020"}};
+}
+
+std::string assessment_csv(const Assessment& a) {
+  std::ostringstream out;
+  out.precision(17);  // every score's double, as the JSON keeps it
+  out << "software,world,sample,seed,score\n";
+  for (const auto& s : a.software) {
+    const std::string label = "\"" + s.label + "\"";
+    for (std::size_t j = 0; j < a.seeds.size(); ++j) out << label << ",design,0," << a.seeds[j] << "," << s.design_scores[j] << "\n";
+    for (std::size_t k = 0; k < a.samples.size(); ++k)
+      for (std::size_t j = 0; j < a.seeds.size(); ++j)
+        out << label << ",pseudo-reality," << a.samples[k] << "," << a.seeds[j] << ","
+            << s.reality_scores[k * a.seeds.size() + j] << "\n";
+  }
+  return out.str();
 }
 
 }  // namespace sd::app

@@ -3,6 +3,8 @@
 // sample, every knob by its file name) and an assessment (app/assess_job).
 #include <nlohmann/json.hpp>
 
+#include <string>
+
 #include "app/assess_job.hpp"
 #include "simulator/robot_model.hpp"
 
@@ -10,5 +12,8 @@ namespace sd::app {
 
 nlohmann::json robot_model_document(const RobotModel& model);
 nlohmann::json assessment_document(const Assessment& assessment);
+/// Every run of the assessment as CSV (`assess --csv`): software, world (design or
+/// pseudo-reality), sample (0 in the design model), seed, score.
+std::string assessment_csv(const Assessment& assessment);
 
 }  // namespace sd::app
