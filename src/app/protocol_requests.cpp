@@ -89,12 +89,15 @@ PlannedExperiment plan_requested_experiment(const ProtocolRequest& request, cons
   return plan_experiment(protocol, scope);
 }
 
-nlohmann::json experiment_plan_document(const ProtocolRequest& request, const FileScope& scope,
-                                        std::optional<unsigned> estimate_threads) {
-  const PlannedExperiment plan = plan_requested_experiment(request, scope);
-  if (!estimate_threads) return plan_document(plan, nullptr);
-  const DurationEstimate estimate = estimate_duration(plan, *estimate_threads);
-  return plan_document(plan, &estimate);
+EstimatedPlan plan_with_estimate(const ProtocolRequest& request, const FileScope& scope,
+                                 std::optional<unsigned> estimate_threads) {
+  EstimatedPlan out{plan_requested_experiment(request, scope), std::nullopt};
+  if (estimate_threads) out.estimate = estimate_duration(out.plan, *estimate_threads);
+  return out;
+}
+
+nlohmann::json estimated_plan_document(const EstimatedPlan& planned) {
+  return plan_document(planned.plan, planned.estimate ? &*planned.estimate : nullptr);
 }
 
 }  // namespace sd::app

@@ -37,10 +37,15 @@ experiments::Protocol requested_protocol(const ProtocolRequest& request, const F
 /// user's own files only).
 PlannedExperiment plan_requested_experiment(const ProtocolRequest& request, const FileScope& scope = FileScope::local());
 
-/// The plan's document (`experiment --dry-run --json`, the page's Plan, Python's
-/// plan_experiment): with `estimate_threads`, also how long it would take with that many threads
-/// (0: all cores), its speed measured now.
-nlohmann::json experiment_plan_document(const ProtocolRequest& request, const FileScope& scope,
-                                        std::optional<unsigned> estimate_threads);
+/// A plan and, when asked for, how long it would take with `threads` (0: all cores), its speed
+/// measured now: what `experiment --dry-run`, the page's Plan and Python's plan_experiment show.
+struct EstimatedPlan {
+  PlannedExperiment plan;
+  std::optional<DurationEstimate> estimate;
+};
+EstimatedPlan plan_with_estimate(const ProtocolRequest& request, const FileScope& scope,
+                                 std::optional<unsigned> estimate_threads);
+/// Its document (`experiment --dry-run --json`): plan_document with the estimate when there is one.
+nlohmann::json estimated_plan_document(const EstimatedPlan& planned);
 
 }  // namespace sd::app

@@ -152,10 +152,16 @@ void print_submission(app::Home& home, const storage::User& user, const app::Clu
             << "  watch it:  swarmdesign status\n  then:      swarmdesign report " << name << "\n";
 }
 
-void print_estimate(const app::PlannedExperiment& plan, const ExperimentOptions& o) {
-  for (const auto& note : plan.notes) std::cerr << "swarmdesign: note: " << note << "\n";
-  const app::DurationEstimate estimate = app::estimate_duration(plan, o.threads);
-  print_plan(plan);
+/// `--dry-run`: the plan and its time here (app::plan_with_estimate, as the page's Plan).
+void print_estimate(const ExperimentOptions& o) {
+  const app::EstimatedPlan planned = app::plan_with_estimate(protocol_request(o), app::FileScope::local(), o.threads);
+  for (const auto& note : planned.plan.notes) std::cerr << "swarmdesign: note: " << note << "\n";
+  if (o.json) {
+    std::cout << app::estimated_plan_document(planned).dump(2) << "\n";
+    return;
+  }
+  const app::DurationEstimate& estimate = *planned.estimate;
+  print_plan(planned.plan);
   std::cout << "On this machine (" << estimate.threads << " threads, speed measured now):\n";
   for (const auto& m : estimate.missions)
     std::cout << "  " << m.mission << ": " << m.runs << " runs at " << format_number(std::round(m.seconds_per_run * 1e5) / 100)
@@ -164,14 +170,7 @@ void print_estimate(const app::PlannedExperiment& plan, const ExperimentOptions&
 }
 
 void run_experiment_command(const ExperimentOptions& o) {
-  if (o.dry_run && o.json) {
-    // The document the page's Plan and Python's plan_experiment answer (app::experiment_plan_document).
-    const nlohmann::json plan = app::experiment_plan_document(protocol_request(o), app::FileScope::local(), o.threads);
-    for (const auto& note : plan.at("notes")) std::cerr << "swarmdesign: note: " << note.get<std::string>() << "\n";
-    std::cout << plan.dump(2) << "\n";
-    return;
-  }
-  if (o.dry_run) return print_estimate(app::plan_requested_experiment(protocol_request(o)), o);
+  if (o.dry_run) return print_estimate(o);
   // Where it runs is the project's experiment backend's (a cluster project's: a Slurm array).
   const app::LaunchedExperiment launched = [&] {
     app::Home home;

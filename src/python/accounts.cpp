@@ -116,7 +116,7 @@ py::object plan_experiment(const std::string& request_json, std::optional<unsign
   const app::ProtocolRequest request = protocol_request(request_json);
   const nlohmann::json doc = [&] {
     py::gil_scoped_release free;  // the estimate simulates
-    return app::experiment_plan_document(request, app::FileScope::local(), estimate_threads);
+    return app::estimated_plan_document(app::plan_with_estimate(request, app::FileScope::local(), estimate_threads));
   }();
   return to_python(doc);
 }

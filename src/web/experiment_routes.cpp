@@ -67,8 +67,8 @@ void add_experiment_routes(Routes& routes) {
       return call.body.contains(key) && call.body.at(key).is_boolean() && call.body.at(key).get<bool>();
     };
     if (flag("dry_run"))
-      return app::experiment_plan_document(request, app::FileScope::own_projects(call.home, call.user),
-                                           flag("estimate") ? std::optional<unsigned>(0) : std::nullopt);
+      return app::estimated_plan_document(app::plan_with_estimate(
+          request, app::FileScope::own_projects(call.home, call.user), flag("estimate") ? std::optional<unsigned>(0) : std::nullopt));
     return launched_document(call, request);
   });
 
