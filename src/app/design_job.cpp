@@ -194,12 +194,27 @@ DesignOutcome run_design(PreparedDesign& d, const DesignRunOptions& options) {
   });
 
   DesignOutcome outcome;
-  while (race.advance()) {
-    if (options.cancel && options.cancel->cancelled()) {
-      outcome.cancelled = true;
-      outcome.experiments_used = race.result().experiments_used;
-      return outcome;
+  // A cancel stops the race step it falls in between two runs (the step is dropped: the design
+  // resumes from the last durable one), so it is heard within a run at any budget.
+  struct StopFlag {
+    Evaluator& evaluator;
+    ~StopFlag() { evaluator.stop_when(nullptr); }
+  } stop_flag{evaluator};
+  if (options.cancel) evaluator.stop_when(&options.cancel->flag());
+  long long durable_experiments = race.state().experiments_used;
+  try {
+    while (race.advance()) {
+      durable_experiments = race.state().experiments_used;
+      if (options.cancel && options.cancel->cancelled()) {
+        outcome.cancelled = true;
+        outcome.experiments_used = durable_experiments;
+        return outcome;
+      }
     }
+  } catch (const EvaluationStopped&) {
+    outcome.cancelled = true;
+    outcome.experiments_used = durable_experiments;
+    return outcome;
   }
   const design::DesignResult result = race.result();
   outcome.experiments_used = result.experiments_used;

@@ -123,7 +123,7 @@ struct DesignRunOptions {
   unsigned threads = 0;               // local threads when no evaluator is given (0: all cores)
   Evaluator* evaluator = nullptr;     // another backend (MPI ranks, ...); else threads
   DesignObserver* observer = nullptr;
-  const CancelToken* cancel = nullptr;  // the design stops after the race step it is in, its state saved
+  const CancelToken* cancel = nullptr;  // the design stops between two runs, the step it was in dropped: it resumes from the last durable one
 };
 
 struct DesignOutcome {

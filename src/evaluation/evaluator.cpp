@@ -40,7 +40,12 @@ void ThreadedEvaluator::evaluate(const Mission& mission, std::span<const Evaluat
   }
   mission_ = &mission;
   mission_digest_ = mission.digest;
+  std::atomic<bool> stopped{false};
   Executor::shared().run(tasks.size(), static_cast<unsigned>(threads_), [&](std::size_t i, unsigned worker) {
+    if (stop_requested()) {  // the rest of the batch is skipped: each worker's next task ends at once
+      stopped.store(true, std::memory_order_relaxed);
+      return;
+    }
     Slot& slot = slots_[worker];
     const EvaluationTask& task = tasks[i];
     Simulation* simulation;
@@ -57,6 +62,7 @@ void ThreadedEvaluator::evaluate(const Mission& mission, std::span<const Evaluat
     }
     scores[i] = simulation->run(task.seed, nullptr, task.robot);
   });
+  if (stopped.load()) throw EvaluationStopped();
 }
 
 }  // namespace sd

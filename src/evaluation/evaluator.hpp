@@ -4,10 +4,12 @@
 // by index. Local threads implement it now; MPI ranks implement the same interface. Scores are
 // written by task index, so a batch's result never depends on how many workers computed it or
 // which worker computed which task.
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -30,6 +32,12 @@ struct EvaluationTask {
   const RobotModel* robot = nullptr;
 };
 
+/// evaluate() saw its stop flag raised and left some tasks unscored: the whole batch is void
+/// (a design drops the step and resumes from its last durable one).
+struct EvaluationStopped : std::runtime_error {
+  EvaluationStopped() : std::runtime_error("the evaluation was stopped") {}
+};
+
 class Evaluator {
  public:
   virtual ~Evaluator() = default;
@@ -37,6 +45,17 @@ class Evaluator {
   virtual void evaluate(const Mission& mission, std::span<const EvaluationTask> tasks, std::span<double> scores) = 0;
   /// Workers it evaluates with (for reports).
   virtual int workers() const = 0;
+  /// While `flag` is set and raised, a batch stops between two runs and evaluate() throws
+  /// EvaluationStopped, so a cancel is heard within one run rather than one batch (a race step
+  /// at a large budget is a minute). A backend that cannot stop mid-batch (MPI) ignores it:
+  /// its caller's check between batches stops it. nullptr: no flag.
+  void stop_when(const std::atomic<bool>* flag) { stop_ = flag; }
+
+ protected:
+  bool stop_requested() const { return stop_ != nullptr && stop_->load(std::memory_order_relaxed); }
+
+ private:
+  const std::atomic<bool>* stop_ = nullptr;
 };
 
 /// Evaluates on up to `threads` workers of the process's Executor (0: one per core). Keeps,

@@ -8,6 +8,7 @@
 #include "app/design_job.hpp"
 #include "app/documents.hpp"
 #include "app/errors.hpp"
+#include "evaluation/evaluator.hpp"
 #include "workflow/design_helpers.hpp"
 #include "workflow/swarmdesign_process.hpp"
 
@@ -100,6 +101,57 @@ TEST_F(DesignJob, CancelledAtACheckpointAndResumedItEndsAsTheUninterruptedDesign
                                       "", {});
   ASSERT_EQ(cli.exit_code, 0) << cli.err;
   EXPECT_EQ(design_outcome(cli.out), outcome_of(*done.report));
+}
+
+/// Local threads that, in batch `batch`, score half the batch and then hear a cancel: what a
+/// Stop pressed in the middle of a long race step does.
+class CancelMidStep final : public Evaluator {
+ public:
+  CancelMidStep(app::CancelToken& token, int batch) : token_(token), batch_(batch) {}
+  void evaluate(const Mission& mission, std::span<const EvaluationTask> tasks, std::span<double> scores) override {
+    if (++batches_ == batch_) {
+      EXPECT_GE(tasks.size(), 2u);
+      const std::size_t half = tasks.size() / 2;
+      inner_.evaluate(mission, tasks.first(half), scores.first(half));
+      token_.cancel();
+      inner_.stop_when(&token_.flag());
+      inner_.evaluate(mission, tasks.subspan(half), scores.subspan(half));  // throws EvaluationStopped
+      ADD_FAILURE() << "a raised stop flag must stop the batch";
+    }
+    inner_.evaluate(mission, tasks, scores);
+  }
+  int workers() const override { return 1; }
+  int batches() const { return batches_; }
+
+ private:
+  ThreadedEvaluator inner_{1};
+  app::CancelToken& token_;
+  int batch_;
+  int batches_ = 0;
+};
+
+TEST_F(DesignJob, ACancelInTheMiddleOfARaceStepStopsItThereAndTheResumedDesignIsTheUninterruptedOne) {
+  app::PreparedDesign whole = app::prepare_new_design(settings(), folder_ / "whole");
+  const app::DesignOutcome done = app::run_design(whole, {.threads = 2});
+  ASSERT_TRUE(done.report);
+
+  const auto parts = folder_ / "parts";
+  app::PreparedDesign first = app::prepare_new_design(settings(), parts);
+  app::CancelToken token;
+  CancelMidStep evaluator(token, 6);
+  const app::DesignOutcome stopped = app::run_design(first, {.threads = 1, .evaluator = &evaluator, .cancel = &token});
+  EXPECT_TRUE(stopped.cancelled);
+  EXPECT_FALSE(stopped.report);
+  EXPECT_EQ(evaluator.batches(), 6) << "no batch after the cancel";
+  EXPECT_GT(stopped.experiments_used, 0);
+  EXPECT_LT(stopped.experiments_used, done.report->experiments_used);
+
+  // The half-scored step left nothing behind: resumed, the design is the uninterrupted one.
+  app::PreparedDesign rest = app::prepare_resume(parts);
+  const app::DesignOutcome resumed = app::run_design(rest, {.threads = 2});
+  ASSERT_TRUE(resumed.report);
+  EXPECT_EQ(outcome_of(*resumed.report), outcome_of(*done.report));
+  EXPECT_EQ(experiment_log(parts), experiment_log(folder_ / "whole"));
 }
 
 TEST_F(DesignJob, BadRequestsAreRefusedBeforeAnythingIsWritten) {

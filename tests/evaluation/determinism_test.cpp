@@ -1,6 +1,7 @@
 // (mission, control software, seed) -> score is a pure function, whatever the threads.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -53,6 +54,26 @@ TEST(Determinism, ScoresDoNotDependOnTheThreadCount) {
   EXPECT_EQ(one, two);
   EXPECT_EQ(one, three);
   for (std::size_t i = 0; i < tasks.size(); ++i) EXPECT_EQ(one[i], evaluate(m, *tasks[i].software, tasks[i].seed));
+}
+
+TEST(Determinism, ARaisedStopFlagStopsABatchAndALoweredOneChangesNothing) {
+  const Mission m = load_mission("aac");
+  const ControlSoftware a = parse_control_software("--fsm-config --nstates 1 --s0 0 --rwm0 50");
+  std::vector<EvaluationTask> tasks;
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) tasks.push_back({&a, seed});
+  std::vector<double> plain(tasks.size()), flagged(tasks.size()), stopped(tasks.size(), -7.0);
+  ThreadedEvaluator(2).evaluate(m, tasks, plain);
+  std::atomic<bool> stop{false};
+  ThreadedEvaluator evaluator(2);
+  evaluator.stop_when(&stop);
+  evaluator.evaluate(m, tasks, flagged);
+  EXPECT_EQ(plain, flagged);  // a flag never raised: the same scores, bit for bit
+  stop.store(true);
+  EXPECT_THROW(evaluator.evaluate(m, tasks, stopped), EvaluationStopped);
+  EXPECT_EQ(stopped, std::vector<double>(tasks.size(), -7.0)) << "no run after the stop";
+  evaluator.stop_when(nullptr);
+  evaluator.evaluate(m, tasks, stopped);
+  EXPECT_EQ(plain, stopped);
 }
 
 /// One run's score and trace, pairs found one way or the other.
