@@ -54,12 +54,13 @@ argos::Experiment mission_experiment(Mission mission, const argos::ExperimentOpt
   const std::string& tag = options.controller_tag;
   if (tag != "automode_controller" && tag != "automode_controller_bt")
     throw InvalidRequest("--controller: automode_controller or automode_controller_bt, not '" + tag + "'");
+  // A sample's file is run against the design model's: the exporter says where ARGoS' random
+  // streams would not pair them (and every knob ARGoS cannot express).
+  const RobotModel design_model = mission.robot;
   mission = in_requested_sample(std::move(mission), pseudo_reality, sample, scope);
-  argos::Experiment experiment = argos::argos_experiment(mission, options);
-  if (mission.robot.has_deviations())
-    experiment.notes.push_back("this pseudo-reality's per-robot deviations (each robot's own gains) have no ARGoS "
-                               "attribute: the file gives every e-puck the sample's noise, not its deviations");
-  return experiment;
+  argos::ExperimentOptions sample_options = options;
+  if (!pseudo_reality.empty()) sample_options.paired_with = &design_model;
+  return argos::argos_experiment(mission, sample_options);
 }
 
 argos::Experiment export_mission(const MissionExportRequest& request) {
@@ -77,10 +78,17 @@ argos::Experiment export_mission(const MissionExportRequest& request) {
 
 nlohmann::json argos_files(Home& home, const storage::User& user, const ArgosFilesRequest& request, const FileScope& scope) {
   const TestTarget target = test_target(home, user, request.project, request.software, request.design, scope);
+  const ArgosExportLine line = try_export_control_software(target.software);
   argos::ExperimentOptions options;
   if (target.software.architecture == Architecture::BehaviourTree) options.controller_tag = "automode_controller_bt";
+  // An FSM is also the file's default: automode_main runs it when given no control software.
+  else if (line.exported) {
+    // As IRIDIA's files write it: the states, without the command line's option name.
+    const std::string prefix = "--fsm-config ";
+    const std::string& text = line.result.text;
+    options.default_fsm_config = text.starts_with(prefix) ? text.substr(prefix.size()) : text;
+  }
   const argos::Experiment experiment = mission_experiment(target.mission, options, request.pseudo_reality, request.sample, scope);
-  const ArgosExportLine line = try_export_control_software(target.software);
   const std::string file = target.mission.name + ".argos";
   nlohmann::json doc = {{"design", target.design_id ? nlohmann::json(*target.design_id) : nlohmann::json()},
                         {"control_software", target.configuration},

@@ -128,7 +128,39 @@ void write_loop_functions(pugi::xml_node root, const Mission& m, const Experimen
   for (const auto& [key, value] : lf.params) attr(params, key.c_str(), value);
 }
 
-void write_controller(pugi::xml_node root, const Mission& m, const ExperimentOptions& options) {
+/// Every knob of the model ARGoS cannot express (its camera's geometry, per-robot deviations)
+/// that is not ARGoS' own value: left out of the file, said in it and in the notes.
+void note_knobs_argos_lacks(pugi::xml_node controller, const RobotModel& r, Experiment& out) {
+  const RobotModel argos_own;
+  for (const RobotKnob& knob : kRobotKnobs) {
+    if (knob.argos_block != ArgosBlock::None || r.*(knob.member) == argos_own.*(knob.member)) continue;
+    const std::string what = std::string(knob.name) + " " + number(r.*(knob.member)) + " (ARGoS: " +
+                             number(argos_own.*(knob.member)) + ")";
+    comment(controller, "Not in this file: " + what + ". argos3-epuck has no attribute for it.");
+    out.notes.push_back("ARGoS cannot express " + what + ": argos3-epuck has no attribute for it, so runs of this file "
+                        "have ARGoS' value, not the model's");
+  }
+}
+
+/// Where this model and the paired one make argos3-epuck create different random generators.
+void note_generators(pugi::xml_node controller, const RobotModel& r, const RobotModel& paired, Experiment& out) {
+  for (const RobotKnob& knob : kRobotKnobs) {
+    if (knob.argos_generator != ArgosGenerator::IfNonZero) continue;
+    const bool here = r.*(knob.member) > 0.0, there = paired.*(knob.member) > 0.0;
+    if (here == there) continue;
+    const std::string where = std::string(knob.argos_element) + " " + std::string(knob.argos_attribute);
+    const std::string text =
+        std::string(here ? "this file's " : "the paired file's ") + where + " is above 0 and the other's is 0: argos3-epuck " +
+        "then creates one more random generator per robot, and ARGoS seeds generators in the order they are created, so " +
+        "every later one (the loop functions' placements included) differs and runs with the same seed do not start " +
+        "alike. To pair them seed by seed, give the file whose " + where + " is 0 the value 1e-9 (a generator, no noise " +
+        "that matters)";
+    comment(controller, "Random streams: " + text + ".");
+    out.notes.push_back(text);
+  }
+}
+
+void write_controller(pugi::xml_node root, const Mission& m, const ExperimentOptions& options, Experiment& out) {
   const RobotModel& r = m.robot;
   auto controllers = child(root, "controllers");
   comment(controllers, "ARGoS3-AutoMoDe's controller with the sensors, actuators and noise of the reference model; "
@@ -157,7 +189,11 @@ void write_controller(pugi::xml_node root, const Mission& m, const ExperimentOpt
     const auto block = knob.argos_block == ArgosBlock::Actuators ? actuators : sensors;
     attr(block.child(std::string(knob.argos_element).c_str()), std::string(knob.argos_attribute).c_str(), number(value));
   }
-  element(controller, "params", {{"readable", "false"}, {"history", "false"}});
+  auto params = element(controller, "params", {{"readable", "false"}, {"history", "false"}});
+  // AutoMoDeController reads its default FSM from here (fsm-config); a command-line one wins.
+  if (!options.default_fsm_config.empty()) attr(params, "fsm-config", options.default_fsm_config);
+  note_knobs_argos_lacks(controller, r, out);
+  if (options.paired_with) note_generators(controller, r, *options.paired_with, out);
 }
 
 void write_arena(pugi::xml_node root, const Mission& m, const ExperimentOptions& options, Experiment& out) {
@@ -184,7 +220,9 @@ void write_arena(pugi::xml_node root, const Mission& m, const ExperimentOptions&
   }
   for (std::size_t i = 0; i < lights.size(); ++i) {
     auto light = child(arena, "light");
-    attr(light, "id", "light" + std::to_string(i));
+    // "light", the id ARGoS' own files give it (loop functions and modules that look the light
+    // up find it by that name); further lights light1, light2 ...
+    attr(light, "id", i == 0 ? std::string("light") : "light" + std::to_string(i));
     attr(light, "position", triple(lights[i].position.x, lights[i].position.y, lights[i].position.z));
     attr(light, "orientation", "0,0,0");
     attr(light, "color", color_name(lights[i].rgb));
@@ -238,7 +276,9 @@ Experiment argos_experiment(const Mission& m, const ExperimentOptions& options) 
   // (XML comments cannot hold a double hyphen: the options are named without theirs.)
   comment(doc, "Mission " + m.name + " (" + m.title + "), written by swarmdesign mission export-argos. Run it with "
                "automode_main -n -c FILE.argos, then the seed option and the control software (fsm-config or "
-               "bt-config) last.");
+               "bt-config) last" +
+               std::string(options.default_fsm_config.empty() ? "." : "; given none, it runs the FSM of the "
+                                                                      "controller's params (fsm-config), the exported design."));
   auto root = child(doc, "argos-configuration");
 
   auto framework = child(root, "framework");
@@ -248,7 +288,7 @@ Experiment argos_experiment(const Mission& m, const ExperimentOptions& options) 
   attr(experiment, "random_seed", "0");
 
   write_loop_functions(root, m, options, out);
-  write_controller(root, m, options);
+  write_controller(root, m, options, out);
   write_arena(root, m, options, out);
 
   auto dynamics = child(child(root, "physics_engines"), "dynamics2d");

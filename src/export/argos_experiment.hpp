@@ -24,6 +24,13 @@ struct ExperimentOptions {
   std::string controller_tag = "automode_controller";
   /// Seeds the e-pucks' start poses written in the file (loop functions re-place them).
   std::uint64_t placement_seed = 1;
+  /// The robot model of the file this one will be compared with run by run (a pseudo-reality
+  /// sample's file: the design model's). Where the two make ARGoS create different random
+  /// generators, the file and the notes say so and how to pair them. nullptr: no such file.
+  const RobotModel* paired_with = nullptr;
+  /// An FSM's configuration (as automode_main takes it) to write as the controller's default
+  /// (`<params fsm-config>`), so automode_main runs it when given none; empty: none.
+  std::string default_fsm_config;
 };
 
 struct Experiment {

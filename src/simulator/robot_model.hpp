@@ -48,6 +48,12 @@ enum class KnobDomain { Positive, NonNegative, Probability, Deviation /* [0, 1) 
 /// leaves the attribute out at zero (a noise the plugin adds only when asked for).
 enum class ArgosBlock { None, Actuators, Sensors, SensorsIfNonZero };
 
+/// Whether argos3-epuck creates a random generator for the knob's sensor or actuator only when
+/// its value is above 0 (CRandom::CreateRNG in its Init). ARGoS seeds generators in the order they
+/// are created, so one more or one fewer shifts every later one, the loop functions' placements
+/// included: two files that differ in this are not paired seed by seed.
+enum class ArgosGenerator { Always, IfNonZero };
+
 /// One knob of the robot model: its name in mission and pseudo-reality files, and where
 /// ARGoS reads it (the block and element of the e-puck's controller, and its attribute). The
 /// ARGoS exporter (export/argos_experiment.cpp) writes every knob from this table.
@@ -55,21 +61,27 @@ struct RobotKnob {
   std::string_view name;
   double RobotModel::*member;
   KnobDomain domain;
-  ArgosBlock argos_block;            // None: ARGoS has no such knob (per-robot deviations)
+  ArgosBlock argos_block;            // None: ARGoS has no such knob (camera geometry, per-robot deviations)
   std::string_view argos_element;
   std::string_view argos_attribute;
+  ArgosGenerator argos_generator = ArgosGenerator::Always;  // (None: no generator of its own)
 };
 
 inline constexpr std::array<RobotKnob, 13> kRobotKnobs{{
     {"rab_range", &RobotModel::rab_range, KnobDomain::Positive, ArgosBlock::Actuators, "epuck_range_and_bearing", "range"},
     {"rab_loss", &RobotModel::rab_loss, KnobDomain::Probability, ArgosBlock::Sensors, "epuck_range_and_bearing", "loss_probability"},
     {"rab_noise", &RobotModel::rab_noise, KnobDomain::NonNegative, ArgosBlock::SensorsIfNonZero, "epuck_range_and_bearing", "noise_std_dev"},
-    {"wheel_noise", &RobotModel::wheel_noise, KnobDomain::NonNegative, ArgosBlock::Actuators, "epuck_wheels", "noise_std_dev"},
-    {"proximity_noise", &RobotModel::proximity_noise, KnobDomain::NonNegative, ArgosBlock::Sensors, "epuck_proximity", "noise_level"},
-    {"light_noise", &RobotModel::light_noise, KnobDomain::NonNegative, ArgosBlock::Sensors, "epuck_light", "noise_level"},
-    {"ground_noise", &RobotModel::ground_noise, KnobDomain::NonNegative, ArgosBlock::Sensors, "epuck_ground", "noise_level"},
+    {"wheel_noise", &RobotModel::wheel_noise, KnobDomain::NonNegative, ArgosBlock::Actuators, "epuck_wheels", "noise_std_dev",
+     ArgosGenerator::IfNonZero},
+    {"proximity_noise", &RobotModel::proximity_noise, KnobDomain::NonNegative, ArgosBlock::Sensors, "epuck_proximity", "noise_level",
+     ArgosGenerator::IfNonZero},
+    {"light_noise", &RobotModel::light_noise, KnobDomain::NonNegative, ArgosBlock::Sensors, "epuck_light", "noise_level",
+     ArgosGenerator::IfNonZero},
+    {"ground_noise", &RobotModel::ground_noise, KnobDomain::NonNegative, ArgosBlock::Sensors, "epuck_ground", "noise_level",
+     ArgosGenerator::IfNonZero},
     {"camera_range", &RobotModel::camera_range, KnobDomain::Positive, ArgosBlock::None, "", ""},
-    {"camera_noise", &RobotModel::camera_noise, KnobDomain::NonNegative, ArgosBlock::SensorsIfNonZero, "epuck_omnidirectional_camera", "noise_std_dev"},
+    {"camera_noise", &RobotModel::camera_noise, KnobDomain::NonNegative, ArgosBlock::SensorsIfNonZero, "epuck_omnidirectional_camera", "noise_std_dev",
+     ArgosGenerator::IfNonZero},
     {"wheel_deviation", &RobotModel::wheel_deviation, KnobDomain::Deviation, ArgosBlock::None, "", ""},
     {"proximity_deviation", &RobotModel::proximity_deviation, KnobDomain::Deviation, ArgosBlock::None, "", ""},
     {"light_deviation", &RobotModel::light_deviation, KnobDomain::Deviation, ArgosBlock::None, "", ""},

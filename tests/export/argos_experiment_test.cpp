@@ -8,6 +8,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "export/argos_experiment.hpp"
 #include "missions/catalogue.hpp"
@@ -192,6 +193,70 @@ TEST(export_ArgosExperiment, EveryKnobArgosReadsIsWrittenWhereTheKnobTableSays) 
   const auto sensors = quiet.root.child("controllers").child("automode_controller").child("sensors");
   EXPECT_FALSE(sensors.child("epuck_range_and_bearing").attribute("noise_std_dev"));
   EXPECT_FALSE(sensors.child("epuck_omnidirectional_camera").attribute("noise_std_dev"));
+}
+
+/// Whether some note (or comment) holds `text`.
+bool mentions(const std::vector<std::string>& notes, const std::string& text) {
+  for (const std::string& n : notes)
+    if (n.find(text) != std::string::npos) return true;
+  return false;
+}
+
+// Issue #55's trip-wires, as a user taking a sample to ARGoS meets them.
+TEST(export_ArgosExperiment, ASampleThatMakesArgosCreateAnotherRandomGeneratorSaysSoAndHowToPairIt) {
+  const Mission design = load_mission("tutti-aggregation");
+  ASSERT_EQ(design.robot.camera_noise, 0.0);
+  Mission sample = design;
+  sample.robot.camera_noise = 0.02;  // tuttifrutti-transfer's camera noise
+  argos::ExperimentOptions paired;
+  paired.paired_with = &design.robot;
+  const argos::Experiment e = argos::argos_experiment(sample, paired);
+  ASSERT_TRUE(mentions(e.notes, "epuck_omnidirectional_camera noise_std_dev is above 0 and the other's is 0")) << e.notes.size();
+  EXPECT_TRUE(mentions(e.notes, "the value 1e-9"));
+  EXPECT_NE(e.xml.find("Random streams: this file's epuck_omnidirectional_camera noise_std_dev"), std::string::npos);
+  // Wheels, proximity, light and ground noise at 0 where the design model has them: the same.
+  Mission quiet = design;
+  quiet.robot.wheel_noise = 0.0;
+  const argos::Experiment q = argos::argos_experiment(quiet, paired);
+  EXPECT_TRUE(mentions(q.notes, "this file's epuck_wheels noise_std_dev") || mentions(q.notes, "the paired file's epuck_wheels"));
+  // Zero where the design model is zero, above where it is above: paired, nothing to say.
+  Mission alike = design;
+  alike.robot.wheel_noise = 0.2;
+  alike.robot.rab_noise = 0.01;  // the RAB sensor always has its generator
+  EXPECT_TRUE(argos::argos_experiment(alike, paired).notes.empty());
+  // Without a paired file, the design model's own file says nothing of streams.
+  EXPECT_FALSE(mentions(argos::argos_experiment(sample).notes, "random generator"));
+}
+
+TEST(export_ArgosExperiment, EveryKnobArgosCannotExpressIsNotedNotDroppedSilently) {
+  Mission m = load_mission("tutti-aggregation");
+  EXPECT_TRUE(argos::argos_experiment(m).notes.empty());
+  m.robot.camera_range = 0.5;
+  m.robot.wheel_deviation = 0.1;
+  const argos::Experiment e = argos::argos_experiment(m);
+  EXPECT_TRUE(mentions(e.notes, "ARGoS cannot express camera_range 0.5 (ARGoS: 0.335)"));
+  EXPECT_TRUE(mentions(e.notes, "ARGoS cannot express wheel_deviation 0.1 (ARGoS: 0)"));
+  EXPECT_EQ(e.notes.size(), 2u);
+  EXPECT_NE(e.xml.find("Not in this file: camera_range 0.5"), std::string::npos);
+}
+
+TEST(export_ArgosExperiment, TheLightHasArgosUsualIdAndAnFsmIsTheControllersDefault) {
+  Mission m = load_mission("foraging");
+  ASSERT_FALSE(m.arena.lights.empty());
+  m.arena.lights.push_back(m.arena.lights.front());
+  argos::ExperimentOptions options;
+  options.default_fsm_config = "--nstates 1 --s0 0 --rwm0 50";
+  Parsed p;
+  parse(argos::argos_experiment(m, options).xml, p);
+  const auto arena = p.root.child("arena");
+  std::vector<std::string> ids;
+  for (auto light = arena.child("light"); light; light = light.next_sibling("light")) ids.push_back(light.attribute("id").value());
+  EXPECT_EQ(ids, (std::vector<std::string>{"light", "light1"}));
+  const auto params = p.root.child("controllers").child("automode_controller").child("params");
+  EXPECT_EQ(std::string(params.attribute("fsm-config").value()), "--nstates 1 --s0 0 --rwm0 50");
+  Parsed plain;
+  parse(argos::argos_experiment(m).xml, plain);
+  EXPECT_FALSE(plain.root.child("controllers").child("automode_controller").child("params").attribute("fsm-config"));
 }
 
 TEST(export_ArgosExperiment, TuttiFruttiLoopFunctionsBuildTheLedArena) {
