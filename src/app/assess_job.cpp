@@ -54,6 +54,15 @@ std::size_t assess_runs(const AssessRequest& request) {
   return runs;
 }
 
+namespace {
+
+/// Every knob alike, bit for bit: the runs of one are the runs of the other.
+bool same_model(const RobotModel& a, const RobotModel& b) {
+  return std::all_of(kRobotKnobs.begin(), kRobotKnobs.end(), [&](const RobotKnob& k) { return a.*(k.member) == b.*(k.member); });
+}
+
+}  // namespace
+
 Assessment assess(const Mission& mission, const AssessRequest& request) {
   if (request.software.empty()) throw InvalidRequest("assess: no control software to assess");
   if (request.seeds.empty()) throw InvalidRequest("assess: no seed");
@@ -72,20 +81,31 @@ Assessment assess(const Mission& mission, const AssessRequest& request) {
   out.samples = request.samples;
   out.seeds = request.seeds;
   for (const std::uint64_t k : request.samples) out.models.push_back(request.spec.sample(mission.robot, k));
+  // Samples that are the same model (a fixed specification's are all one) give the same runs:
+  // each model runs once and its scores stand for every sample that is it.
+  std::vector<std::size_t> model_of(n_samples);  // sample k's index into `distinct`
+  std::vector<const RobotModel*> distinct;
+  for (std::size_t k = 0; k < n_samples; ++k) {
+    const auto same = std::find_if(distinct.begin(), distinct.end(), [&](const RobotModel* m) { return same_model(*m, out.models[k]); });
+    model_of[k] = static_cast<std::size_t>(same - distinct.begin());
+    if (same == distinct.end()) distinct.push_back(&out.models[k]);
+  }
+  out.distinct_models = static_cast<int>(distinct.size());
 
-  // Per software: its seeds in the design model, then each sample's. The key promises the
-  // evaluator the same software across batches, so its simulations are built once.
+  // Per software: its seeds in the design model, then each distinct model's. The key promises
+  // the evaluator the same software across batches, so its simulations are built once.
   const std::size_t per_software = n_seeds * (1 + n_samples);
+  const std::size_t runs_per_software = n_seeds * (1 + distinct.size());
   std::vector<EvaluationTask> tasks;
-  tasks.reserve(n_software * per_software);
+  tasks.reserve(n_software * runs_per_software);
   for (std::size_t i = 0; i < n_software; ++i) {
     const ControlSoftware* software = &request.software[i].software;
     const auto key = static_cast<std::int64_t>(i);
     for (const std::uint64_t seed : request.seeds) tasks.push_back({software, seed, key, nullptr});
-    for (const RobotModel& model : out.models)
-      for (const std::uint64_t seed : request.seeds) tasks.push_back({software, seed, key, &model});
+    for (const RobotModel* model : distinct)
+      for (const std::uint64_t seed : request.seeds) tasks.push_back({software, seed, key, model});
   }
-  std::vector<double> scores(tasks.size());
+  std::vector<double> ran(tasks.size());
   std::unique_ptr<Evaluator> own;
   Evaluator& evaluator = request.evaluator ? *request.evaluator : *(own = make_evaluator(request.threads));
   const bool batched = request.progress || request.cancel;
@@ -93,8 +113,17 @@ Assessment assess(const Mission& mission, const AssessRequest& request) {
   for (std::size_t first = 0; first < tasks.size(); first += batch) {
     if (request.cancel && request.cancel->cancelled()) throw AssessCancelled();
     const std::size_t count = std::min(batch, tasks.size() - first);
-    evaluator.evaluate(mission, std::span(tasks).subspan(first, count), std::span(scores).subspan(first, count));
+    evaluator.evaluate(mission, std::span(tasks).subspan(first, count), std::span(ran).subspan(first, count));
     if (request.progress) request.progress(first + count, tasks.size());
+  }
+  // Every sample's runs, in the order of the request: the design model's, then sample by sample.
+  std::vector<double> scores(n_software * per_software);
+  for (std::size_t i = 0; i < n_software; ++i) {
+    const double* from = ran.data() + i * runs_per_software;
+    double* to = scores.data() + i * per_software;
+    std::copy(from, from + n_seeds, to);
+    for (std::size_t k = 0; k < n_samples; ++k)
+      std::copy(from + n_seeds * (1 + model_of[k]), from + n_seeds * (2 + model_of[k]), to + n_seeds * (1 + k));
   }
 
   std::vector<double> design_means, reality_means;

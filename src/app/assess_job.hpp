@@ -64,6 +64,7 @@ struct Assessment {
   std::string mission, direction, spec_name, spec_reference, spec_digest;
   std::vector<std::uint64_t> samples, seeds;
   std::vector<RobotModel> models;      // per sample
+  int distinct_models = 0;             // of the samples: a fixed specification's are all one model, run once
   std::vector<SoftwareAssessment> software;
   /// Spearman's rho between the design-model and the pseudo-reality means (NaN for fewer
   /// than three pieces of software), and the pairs whose order the pseudo-realities invert.

@@ -67,6 +67,10 @@ void print_assessment(const app::Assessment& a) {
                 percent(s.relative_drop).c_str(), s.p_value, s.design_rank, s.reality_rank);
   }
   std::printf("Drop: how much worse in the pseudo-realities (positive = a loss); p: paired Wilcoxon signed-rank over seeds.\n");
+  if (a.distinct_models < static_cast<int>(a.samples.size()))
+    std::printf("%s: its %zu samples are %d distinct model(s)%s; each model ran once.\n", a.spec_reference.c_str(),
+                a.samples.size(), a.distinct_models,
+                a.distinct_models == 1 ? " (a fixed specification: more samples add nothing)" : "");
   if (a.software.size() >= 2) {
     std::printf("Ranks: %d of %d pair(s) inverted from the design model to the pseudo-realities", a.inverted_pairs, a.pairs);
     if (std::isfinite(a.rank_correlation)) std::printf("; Spearman's rho %.3f", a.rank_correlation);

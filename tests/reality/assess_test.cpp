@@ -55,6 +55,25 @@ TEST(Assess, DesignModelRunsAreThePlainEvaluationAndEachSampleIsTheMissionInThat
   EXPECT_TRUE(a.models[0].has_deviations());
 }
 
+TEST(Assess, AFixedSpecificationsSamplesAreOneModelRunOnceAndCountedForEach) {
+  const Mission mission = load_mission("aac");
+  app::AssessRequest r = request("iridia-transfer", {kPhototaxis, kAttraction});
+  std::size_t runs = 0;
+  r.progress = [&](std::size_t, std::size_t all) { runs = all; };
+  const app::Assessment a = app::assess(mission, r);
+  EXPECT_EQ(a.distinct_models, 1);
+  EXPECT_EQ(runs, 2u * 6u * (1u + 1u)) << "each software: the design model and the one model, on 6 seeds";
+  for (const app::SoftwareAssessment& s : a.software) {
+    const Mission in_sample = app::in_pseudo_reality(mission, r.spec, 1);
+    const std::vector<double> expected = app::score_seeds(in_sample, parse_control_software(s.configuration), r.seeds);
+    for (std::size_t k = 0; k < r.samples.size(); ++k)
+      EXPECT_EQ(std::vector<double>(s.reality_scores.begin() + static_cast<long>(k * 6), s.reality_scores.begin() + static_cast<long>((k + 1) * 6)),
+                expected) << s.label << " sample " << r.samples[k];
+  }
+  // A specification that varies: every sample is its own model.
+  EXPECT_EQ(app::assess(mission, request("sampled-around", {kAttraction})).distinct_models, 3);
+}
+
 TEST(Assess, TheDropAndItsIntervalSummariseTheScores) {
   const Mission mission = load_mission("aac");
   const app::Assessment a = app::assess(mission, request("iridia-transfer", {kPhototaxis, kAttraction, kStop}));

@@ -47,6 +47,7 @@ json assessment_document(const Assessment& a) {
           {"direction", a.direction},
           {"pseudo_reality", {{"name", a.spec_name}, {"reference", a.spec_reference}, {"digest", a.spec_digest}}},
           {"samples", a.samples},
+          {"distinct_models", a.distinct_models},
           {"seeds", a.seeds},
           {"models", models},
           {"software", software},
