@@ -9,6 +9,7 @@ product_packages=(
   libcli11-dev nlohmann-json3-dev libsqlite3-dev libsodium-dev libboost-dev
   libcpp-httplib-dev  # the web app's server (run-exp)
   libpugixml-dev  # ARGoS experiment files (mission export-argos)
+  libarchive-dev  # a home's backups (admin backup/restore)
   pybind11-dev python3-dev python3-numpy  # the Python module swarmdesign (build/python)
 )
 # Node.js and npm bundle the web app's front end; a machine that has them keeps its own.

@@ -3,6 +3,7 @@
 #include "control/config_string.hpp"
 #include "experiments/protocol.hpp"
 #include "missions/mission.hpp"
+#include "storage/home_archive.hpp"
 
 namespace sd::app {
 
@@ -15,7 +16,8 @@ ErrorKind classify(const std::exception& error) {
   if (dynamic_cast<const Conflict*>(&error)) return ErrorKind::Conflict;
   if (dynamic_cast<const AccessDenied*>(&error)) return ErrorKind::AccessDenied;
   if (dynamic_cast<const TooManyAttempts*>(&error)) return ErrorKind::TooManyAttempts;
-  if (dynamic_cast<const DesignFolderError*>(&error)) return ErrorKind::Refused;
+  if (dynamic_cast<const DesignFolderError*>(&error) || dynamic_cast<const storage::BackupError*>(&error))
+    return ErrorKind::Refused;
   return ErrorKind::Failed;
 }
 
