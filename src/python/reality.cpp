@@ -69,6 +69,7 @@ py::object assess(const std::shared_ptr<Mission>& mission,
                   const std::string& pseudo_reality, const std::vector<std::uint64_t>& samples,
                   const std::vector<std::uint64_t>& seeds, int threads, const py::object& progress) {
   std::vector<app::SoftwareToAssess> labelled;
+  labelled.reserve(software.size());
   for (const auto& [label, s] : software) labelled.push_back({label, *s});
   return run_assessment(*mission, std::move(labelled), pseudo_reality, samples, seeds, threads, progress);
 }

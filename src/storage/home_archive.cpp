@@ -10,7 +10,7 @@
 
 #include <array>
 #include <cerrno>
-#include <cstring>
+#include <system_error>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -110,7 +110,7 @@ struct ArchiveReader {
 /// Adds the regular file at `file` as `name`, its digest taken from the bytes written.
 ArchivedFile add_file(ArchiveWriter& w, const fs::path& file, const std::string& name) {
   const int fd = ::open(file.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
-  if (fd < 0) throw BackupError("cannot read " + name + ": " + std::strerror(errno));
+  if (fd < 0) throw BackupError("cannot read " + name + ": " + std::generic_category().message(errno));
   const std::unique_ptr<int, void (*)(int*)> guard(new int(fd), [](int* f) { ::close(*f); delete f; });
   struct stat st {};
   if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) throw BackupError("cannot read " + name + ": not a regular file");
@@ -153,7 +153,7 @@ void add_text(ArchiveWriter& w, const std::string& name, const std::string& text
 
 /// A name from the archive as a path inside the home, or empty when it would leave it.
 fs::path inside(const std::string& name) {
-  const fs::path p(name);
+  fs::path p(name);
   if (name.empty() || p.is_absolute()) return {};
   for (const auto& part : p)
     if (part == ".." || part == "." || part.empty()) return {};
@@ -176,7 +176,7 @@ HomeArchive archive_home(const fs::path& home, const fs::path& archive_path) {
     w.check(archive_write_set_format_pax_restricted(w.a), "tar");
     // O_EXCL through libarchive's own open: the temporary must be new.
     const int fd = ::open(scratch.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0600);
-    if (fd < 0) throw BackupError("cannot write " + archive_path.string() + ": " + std::strerror(errno));
+    if (fd < 0) throw BackupError("cannot write " + archive_path.string() + ": " + std::generic_category().message(errno));
     if (archive_write_open_fd(w.a, fd) != ARCHIVE_OK) {
       ::close(fd);
       w.check(ARCHIVE_FATAL, "open");
@@ -258,7 +258,7 @@ HomeArchive restore_home(const fs::path& archive_path, const fs::path& home) {
       if (!is_manifest) {
         fs::create_directories((staging / relative).parent_path());
         fd = ::open((staging / relative).c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0600);
-        if (fd < 0) throw BackupError("restore: cannot write " + name + ": " + std::strerror(errno));
+        if (fd < 0) throw BackupError("restore: cannot write " + name + ": " + std::generic_category().message(errno));
       }
       Sha256 hash;
       std::uint64_t size = 0;
@@ -276,7 +276,7 @@ HomeArchive restore_home(const fs::path& archive_path, const fs::path& home) {
           text.append(buffer.data(), static_cast<std::size_t>(n));
         } else if (::write(fd, buffer.data(), static_cast<std::size_t>(n)) != n) {
           ::close(fd);
-          throw BackupError("restore: cannot write " + name + ": " + std::strerror(errno));
+          throw BackupError("restore: cannot write " + name + ": " + std::generic_category().message(errno));
         }
       }
       if (fd >= 0) {
