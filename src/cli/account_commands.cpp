@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "app/account_admin.hpp"
 #include "app/accounts.hpp"
 #include "app/documents.hpp"
 #include "cli/command_registry.hpp"
@@ -117,6 +118,16 @@ void sign_up(const AccountOptions& options) {
   std::cout << "Created user " << user.name << ". Sign in with: swarmdesign sign-in " << user.name << '\n';
 }
 
+// The current password then the new one (twice on a terminal; two lines with --password-stdin).
+void change_password(const AccountOptions& options) {
+  app::Home home;
+  const storage::User user = app::signed_in_user(home);
+  Password old_password{read_password(options.password_stdin, "Current password for " + user.name + ": ", false)};
+  Password new_password{read_password(options.password_stdin, "New password: ", true)};
+  app::change_password_here(home, old_password.text, new_password.text);
+  std::cout << "Changed the password of " << user.name << "; its other sessions (other terminals, web pages) are signed out.\n";
+}
+
 void sign_in(const AccountOptions& options) {
   app::Home home;
   Password password{read_password(options.password_stdin, "Password for " + options.user + ": ", false)};
@@ -175,6 +186,14 @@ CommandRegistrar registrar{10, [](CLI::App& app, Context&) {
                           "$SWARMDESIGN_HOME/session, readable only by you. Five wrong passwords in a row lock the name for "
                           "a minute (here and in the web app).\n\nExample:\n  swarmdesign sign-in alice");
   sign_in_command->callback([options] { sign_in(*options); });
+
+  auto* change_command = app.add_subcommand("change-password", "Change your own password (signs out your other sessions)");
+  change_command->add_flag("--password-stdin", options->password_stdin,
+                           "read the current password, then the new one, one line each, from standard input");
+  change_command->footer(kPasswordHelp + " Rule: " + storage::password_rule() +
+                         ". Your other sessions (other terminals, web pages) end; this one stays.\n\n"
+                         "Example:\n  swarmdesign change-password");
+  change_command->callback([options] { change_password(*options); });
 
   auto* exit_command = app.add_subcommand("exit", "Sign out: end the session and delete its token");
   exit_command->footer("Example:\n  swarmdesign exit");

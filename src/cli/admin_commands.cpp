@@ -14,19 +14,78 @@
 #include "app/home_backup.hpp"
 #include "cli/command_registry.hpp"
 #include "core/home.hpp"
+#include "app/account_admin.hpp"
+#include "app/accounts.hpp"
+#include "storage/clock.hpp"
+
+#include <unistd.h>
 
 namespace sd::cli {
 namespace {
 
 struct Options {
-  std::string file, into;
-  bool json = false;
+  std::string file, into, name, role;
+  bool json = false, yes = false;
 };
 
 std::string megabytes(std::uint64_t bytes) {
   char text[32];
   std::snprintf(text, sizeof text, "%.1f MB", static_cast<double>(bytes) / 1e6);
   return text;
+}
+
+std::string when(const nlohmann::json& t) { return t.is_null() ? "never" : storage::format_time(t.get<std::int64_t>()); }
+
+void users(const Options& o) {
+  app::Home home;
+  const nlohmann::json list = app::accounts_document(app::account_uses(home, app::signed_in_user(home)));
+  if (o.json) {
+    std::cout << list.dump(2) << "\n";
+    return;
+  }
+  std::printf("%-20s %-6s %-9s %10s %8s  %s\n", "ACCOUNT", "ROLE", "STATE", "DISK", "RUNNING", "LAST SIGN-IN");
+  for (const auto& a : list)
+    std::printf("%-20s %-6s %-9s %10s %8d  %s\n", a["name"].get<std::string>().c_str(), a["role"].get<std::string>().c_str(),
+                a["disabled"].get<bool>() ? "disabled" : "active", megabytes(a["disk_bytes"].get<std::uint64_t>()).c_str(),
+                a["running_designs"].get<int>() + a["running_experiments"].get<int>(), when(a["last_sign_in"]).c_str());
+}
+
+void set_disabled(const Options& o, bool disabled) {
+  app::Home home;
+  app::set_account_disabled(home, app::signed_in_user(home), o.name, disabled);
+  std::cout << (disabled ? "Disabled " : "Enabled ") << o.name << (disabled ? ": its sessions ended; it cannot sign in.\n" : ".\n");
+}
+
+void reset_password(const Options& o) {
+  app::Home home;
+  const std::string password = app::reset_account_password(home, app::signed_in_user(home), o.name);
+  if (o.json) {
+    std::cout << nlohmann::json{{"name", o.name}, {"password", password}}.dump(2) << "\n";
+    return;
+  }
+  std::cout << "New password for " << o.name << " (shown once; its sessions ended): " << password << "\n"
+            << "Hand it over; they change it with: swarmdesign change-password\n";
+}
+
+void set_role(const Options& o) {
+  if (o.role != "admin" && o.role != "user") throw UsageError("ROLE: admin or user, not '" + o.role + "'");
+  app::Home home;
+  app::set_account_role(home, app::signed_in_user(home), o.name, o.role == "admin" ? storage::Role::Admin : storage::Role::User);
+  std::cout << o.name << " is now " << (o.role == "admin" ? "an administrator" : "a user") << ".\n";
+}
+
+void delete_user(const Options& o) {
+  app::Home home;
+  const storage::User admin = app::signed_in_user(home);
+  std::string confirmation = o.name;
+  if (!o.yes) {
+    if (!isatty(STDIN_FILENO)) throw UsageError("nothing deleted: confirm with --yes (no terminal to ask on)");
+    std::cerr << "This deletes account " << o.name << " with all its projects, designs, experiments and files.\n"
+              << "Type its name to delete it: " << std::flush;
+    std::getline(std::cin, confirmation);
+  }
+  app::delete_account(home, admin, o.name, confirmation);
+  std::cout << "Deleted account " << o.name << " and everything it owned.\n";
 }
 
 void backup(const Options& o) {
@@ -75,7 +134,7 @@ void check(const Options& o) {
 }
 
 CommandRegistrar registrar{70, [](CLI::App& app, Context&) {
-  auto* admin = app.add_subcommand("admin", "Run a lab's home: back it up, restore it, check it");
+  auto* admin = app.add_subcommand("admin", "Run a lab's home: accounts, backups, checks");
   admin->require_subcommand(1);
   auto o = std::make_shared<Options>();
 
@@ -96,6 +155,30 @@ CommandRegistrar registrar{70, [](CLI::App& app, Context&) {
             "are renamed into the new one, so its designs resume there.\n\n"
             "Example:\n  swarmdesign admin restore lab-2026-12-06.tar.gz --into /srv/swarmdesign");
   r->callback([o] { restore(*o); });
+
+  auto* u = admin->add_subcommand("users", "The accounts: role, state, disk use, running jobs, last sign-in");
+  u->add_flag("--json", o->json, "Print one JSON document");
+  u->footer("For administrators (the home's first account, or one made so with `admin role NAME admin`).");
+  u->callback([o] { users(*o); });
+  auto* d = admin->add_subcommand("disable", "Disable an account: its sessions end and it cannot sign in");
+  d->add_option("NAME", o->name, "the account")->required();
+  d->callback([o] { set_disabled(*o, true); });
+  auto* e = admin->add_subcommand("enable", "Enable a disabled account");
+  e->add_option("NAME", o->name, "the account")->required();
+  e->callback([o] { set_disabled(*o, false); });
+  auto* p = admin->add_subcommand("reset-password", "Give an account a new one-time password (printed once)");
+  p->add_option("NAME", o->name, "the account")->required();
+  p->add_flag("--json", o->json, "Print one JSON document");
+  p->callback([o] { reset_password(*o); });
+  auto* role = admin->add_subcommand("role", "Make an account an administrator, or a user again");
+  role->add_option("NAME", o->name, "the account")->required();
+  role->add_option("ROLE", o->role, "admin or user")->required();
+  role->callback([o] { set_role(*o); });
+  auto* del = admin->add_subcommand("delete-user", "Delete an account with its projects, designs, experiments and files");
+  del->add_option("NAME", o->name, "the account")->required();
+  del->add_flag("--yes", o->yes, "Do not ask for its name again");
+  del->footer("Refused while one of its designs or experiments runs. Nothing of another account is touched.");
+  del->callback([o] { delete_user(*o); });
 
   auto* c = admin->add_subcommand("check", "Check the home: databases, folders, links");
   c->add_flag("--json", o->json, "Print one JSON document");

@@ -21,6 +21,11 @@ struct AccessDenied : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The right password of an account an administrator disabled.
+struct AccountDisabled : AccessDenied {
+  using AccessDenied::AccessDenied;
+};
+
 /// Too many failed sign-ins: the name (or the client) must wait.
 struct TooManyAttempts : std::runtime_error {
   TooManyAttempts(const std::string& message, long long seconds) : std::runtime_error(message), retry_after(seconds) {}

@@ -211,6 +211,14 @@ CREATE TABLE experiment_reality_assessments (
   PRIMARY KEY (design_id, sample, seed)
 );
 )sql",
+    // 8: a lab's server (issue #56): an administrator role (the first account has it), accounts
+    // an administrator disabled (they cannot sign in), and when each last signed in.
+    R"sql(
+ALTER TABLE users ADD COLUMN role TEXT NOT NULL DEFAULT 'user' CHECK (role IN ('user', 'admin'));
+ALTER TABLE users ADD COLUMN disabled INTEGER NOT NULL DEFAULT 0 CHECK (disabled IN (0, 1));
+ALTER TABLE users ADD COLUMN last_sign_in INTEGER;
+UPDATE users SET role = 'admin' WHERE id = (SELECT min(id) FROM users);
+)sql",
 };
 
 }  // namespace

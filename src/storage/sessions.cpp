@@ -66,4 +66,13 @@ void end_session(Database& db, std::string_view token) {
   transaction.commit();
 }
 
+void end_sessions_of(Database& db, std::int64_t user_id, std::optional<std::string_view> except_token) {
+  if (!except_token) {
+    db.prepare("DELETE FROM sessions WHERE user_id = ?").bind(1, user_id).run();
+    return;
+  }
+  const TokenHash keep = hash_token(*except_token);
+  db.prepare("DELETE FROM sessions WHERE user_id = ? AND token_hash <> ?").bind(1, user_id).bind_blob(2, keep.data(), keep.size()).run();
+}
+
 }  // namespace sd::storage

@@ -35,4 +35,7 @@ std::optional<SessionRecord> find_session(Database& db, std::string_view token);
 /// Ends the session (no-op for an unknown token).
 void end_session(Database& db, std::string_view token);
 
+/// Ends every session of the user but the one of `except_token` (none when nullopt).
+void end_sessions_of(Database& db, std::int64_t user_id, std::optional<std::string_view> except_token = std::nullopt);
+
 }  // namespace sd::storage

@@ -1,6 +1,7 @@
 // Sign-in, the session and sign-out: the CLI's accounts, the session kept in a cookie.
 #include <chrono>
 
+#include "app/account_admin.hpp"
 #include "app/accounts.hpp"
 #include "app/errors.hpp"
 #include "web/host_check.hpp"
@@ -42,6 +43,9 @@ void add_account_routes(Routes& routes) {
     std::string token;
     try {
       token = app::open_session(call.home, name, text_field(call.body, "password"), call.context.sign_in);
+    } catch (const storage::AccountDisabled& e) {  // only said to whoever gave its password
+      call.context.addresses.succeeded(address);
+      throw HttpError(403, e.what());
     } catch (const app::AccessDenied&) {  // the same words and work for an unknown name
       call.context.addresses.failed(address);
       throw HttpError(401, "wrong user name or password");
@@ -54,7 +58,18 @@ void add_account_routes(Routes& routes) {
   });
 
   routes.get("/api/session", [](Call& call) -> nlohmann::json {
-    return {{"user", call.user.name}, {"csrf", call.context.guard.csrf_token(*SessionGuard::session_token(call.request))}};
+    return {{"user", call.user.name},
+            {"admin", app::is_admin(call.home, call.user)},
+            {"csrf", call.context.guard.csrf_token(*SessionGuard::session_token(call.request))}};
+  });
+
+  // A user's own new password (`change-password`): the current one first; every other session
+  // of the account ends, this page's stays.
+  routes.post("/api/password", [](Call& call) -> nlohmann::json {
+    const PasswordSlots::Held slot = call.context.passwords.take();  // two Argon2id checks
+    app::change_password(call.home, call.user, text_field(call.body, "current"), text_field(call.body, "new"),
+                         SessionGuard::session_token(call.request));
+    return {{"changed", true}};
   });
 
   routes.post("/api/sign-out", [](Call& call) -> nlohmann::json {

@@ -96,5 +96,6 @@ void add_run_routes(Routes& routes);
 void add_project_routes(Routes& routes);
 void add_experiment_routes(Routes& routes);
 void add_design_form_routes(Routes& routes);
+void add_admin_routes(Routes& routes);
 
 }  // namespace sd::web

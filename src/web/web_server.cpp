@@ -74,6 +74,7 @@ WebServer::WebServer(WebServerOptions options)
   add_project_routes(routes);
   add_experiment_routes(routes);
   add_design_form_routes(routes);
+  add_admin_routes(routes);
 }
 
 WebServer::~WebServer() {

@@ -793,10 +793,12 @@ TEST_F(WebServer, TwoFinishedDesignsAreComparedOnTheSameSeedsWithAPairedTest) {
   const Answer exported = alice_->post("/api/projects/c/argos", {{"design", ids[0]}});
   ASSERT_EQ(exported.status, 200) << exported.text;
   const Mission loaded = load_mission(mission);
-  EXPECT_EQ(exported.body.at("experiment"), argos::argos_experiment(loaded).xml);
-  EXPECT_EQ(exported.body.at("file_name"), loaded.name + ".argos");
   const std::string best0 = compared.body.at("designs").at(0).at("control_software");
   const argos::LegacyString legacy = argos::to_legacy_string(parse_control_software(best0));
+  argos::ExperimentOptions with_default;  // the design's FSM is the controller's default
+  with_default.default_fsm_config = legacy.text.substr(std::string("--fsm-config ").size());
+  EXPECT_EQ(exported.body.at("experiment"), argos::argos_experiment(loaded, with_default).xml);
+  EXPECT_EQ(exported.body.at("file_name"), loaded.name + ".argos");
   EXPECT_EQ(exported.body.at("argos").at("config"), legacy.text);
   EXPECT_EQ(exported.body.at("command"), "automode_main -n -c " + loaded.name + ".argos --seed 1 " + legacy.text);
   EXPECT_EQ(bob_->post("/api/projects/c/argos", {{"design", ids[0]}}).status, 404);
