@@ -104,18 +104,19 @@ test('two ticked designs are compared on the same seeds with a paired test', { t
   await shot(page, 'two-designs-compared');
 });
 
-test('the best shown goes to ARGoS: the mission file as export-argos writes it, the string as export --argos', { timeout: 60000 }, async () => {
+test('the best shown goes to ARGoS: the design\'s file as export-argos writes it, the string as export --argos', { timeout: 60000 }, async () => {
   await openLab();
   await page.waitForFunction(() => !document.getElementById('argos-best').disabled);
   const [download] = await Promise.all([page.waitForEvent('download'), page.click('#argos-best')]);
   assert.equal(download.suggestedFilename(), 'short-aac.argos');
   const saved = readFileSync(await download.path(), 'utf8');
-  const file = JSON.parse(cli(server.env, ['active-project', '--json'])).mission;
   const written = path.join(server.tmp, 'cli.argos');
-  cli(server.env, ['mission', 'export-argos', file, '--out', written]);
+  cli(server.env, ['export-argos', '--out', written]);
   assert.equal(saved, readFileSync(written, 'utf8'));
   const best = JSON.parse(cli(server.env, ['status', '--json'])).progress.best.configuration;
   const legacy = JSON.parse(cli(server.env, ['export', '--argos', '--json', ...best.split(' ')]));
+  // The design's FSM is the file's default: automode_main runs it when given none.
+  assert.ok(saved.includes(`fsm-config="${legacy.config.replace(/^--fsm-config /, '')}"`), saved);
   await page.waitForSelector('[data-testid="argos-command"]');
   assert.equal(await page.textContent('[data-testid="argos-command"]'), `automode_main -n -c short-aac.argos --seed 1 ${legacy.config}`);
   await shot(page, 'argos-files');

@@ -165,8 +165,11 @@ const CommandRegistrar registrar{12, [](CLI::App& app, Context& context) {
   design->add_flag("--json", d->json, "Print one JSON document (the web's ARGoS files give the same)");
   design->footer(
       "The design's own mission (the one it was made for) as mission export-argos writes it, and the\n"
-      "automode_main command line that runs the design's best in it. With --pseudo-reality and --sample,\n"
-      "the same sample of robot model the simulator runs (the reality gap's second step, in ARGoS).\n\n"
+      "automode_main command line that runs the design's best in it; an FSM best is also the file's default\n"
+      "(automode_main runs it when given none). With --pseudo-reality and --sample, the same sample of\n"
+      "robot model the simulator runs (the reality gap's second step, in ARGoS); the terminal and the file\n"
+      "say where ARGoS' random streams would not pair it with the design model's file, and which knobs\n"
+      "ARGoS cannot express.\n\n"
       "Example:\n  swarmdesign export-argos --design 2 --out aac.argos\n"
       "  swarmdesign export-argos --pseudo-reality sampled-around --sample 3 --json");
   design->callback([d] { export_design(*d); });
