@@ -8,6 +8,8 @@ import { initMissionEditor } from './mission_editor.js';
 import { initMissionUpload, renderMissions } from './missions.js';
 import { initMonitor } from './monitor.js';
 import { copyFullScores } from './numbers.js';
+import { initAdmin } from './admin.js';
+import { changePasswordDialog } from './password_dialog.js';
 import { showSignIn } from './signin.js';
 import { clearError, showError } from './toast.js';
 
@@ -26,6 +28,7 @@ function showTab(name) {
   if (name === 'exec') parts.exec.shown();
   if (name === 'designs') parts.monitor.shown(); else parts.monitor.hidden();
   if (name === 'missions') { parts.upload.refreshProjects(); parts.missionEditor.refreshProjects(); }
+  if (name === 'admin' && parts.admin) parts.admin.shown();
 }
 
 async function startApp(user) {
@@ -54,17 +57,23 @@ async function startApp(user) {
   const upload = initMissionUpload({ onUploaded: async () => showMissions(await api('/api/missions')) });
   const missionEditor = initMissionEditor({ onSaved: async () => showMissions(await api('/api/missions')) });
   copyFullScores();
-  parts = { editor, exec, monitor, upload, missionEditor };
+  // An administrator's page has the Admin tab (the server checks the role on every request).
+  const session = await api('/api/session', { quiet: true }).catch(() => ({ admin: false }));
+  const admin = session.admin ? initAdmin({ me: () => $('user-name').textContent }) : null;
+  $('tab-admin').hidden = !admin;
+  parts = { editor, exec, monitor, upload, missionEditor, admin };
   window.__sd = parts; // for the end-to-end tests and the curious
   window.__sd.execCounts = () => exec.graph.nodes().reduce((sum, n) => sum + (n.data('count') || 0), 0);
   for (const tab of document.querySelectorAll('.tab')) tab.addEventListener('click', () => showTab(tab.dataset.tab));
   showMissions(await api('/api/missions'));
   exec.prepare({ text: DEFAULT_TEXT, mission: 'aac', seed: 1 });
   const wanted = (location.hash || '#editor').slice(1);
-  showTab(['editor', 'exec', 'designs', 'missions'].includes(wanted) ? wanted : 'editor');
+  showTab(['editor', 'exec', 'designs', 'missions', ...(admin ? ['admin'] : [])].includes(wanted) ? wanted : 'editor');
   await editor.load(DEFAULT_TEXT);
   document.body.dataset.ready = 'true';
 }
+
+$('user-name').addEventListener('click', () => changePasswordDialog());
 
 $('signout').addEventListener('click', async () => {
   try { await api('/api/sign-out', { body: {} }); } catch { /* signed out anyway */ }
