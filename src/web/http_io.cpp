@@ -48,20 +48,27 @@ void send_json(httplib::Response& response, const nlohmann::json& body, int stat
   response.set_content(body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), "application/json");
 }
 
-void send_error(httplib::Response& response, const std::exception& error) {
+std::string without_server_paths(std::string text, const std::string& home) {
+  if (home.empty()) return text;
+  const std::string root = home.back() == '/' ? home : home + "/";
+  for (std::size_t at = text.find(root); at != std::string::npos; at = text.find(root, at)) text.erase(at, root.size());
+  return text;
+}
+
+void send_error(httplib::Response& response, const std::exception& error, const std::string& home) {
   if (const auto* http = dynamic_cast<const HttpError*>(&error)) {
-    send_json(response, {{"error", http->what()}}, http->status);
+    send_json(response, {{"error", without_server_paths(http->what(), home)}}, http->status);
     return;
   }
   if (const auto* wait = dynamic_cast<const storage::TooManyAttempts*>(&error))
     response.set_header("Retry-After", std::to_string(wait->retry_after));
   const app::ErrorKind kind = app::classify(error);
   if (kind == app::ErrorKind::Failed) {
-    std::cerr << "run-exp: request failed: " << error.what() << "\n";
-    send_json(response, {{"error", std::string("the server failed: ") + error.what()}}, 500);
+    std::cerr << "run-exp: request failed: " << error.what() << "\n";  // the log keeps every path
+    send_json(response, {{"error", "the server failed: " + without_server_paths(error.what(), home)}}, 500);
     return;
   }
-  send_json(response, {{"error", error.what()}}, http_status(kind));
+  send_json(response, {{"error", without_server_paths(error.what(), home)}}, http_status(kind));
 }
 
 const char* alias_or(const nlohmann::json& body, const char* key, const char* old_key) {

@@ -32,8 +32,11 @@ std::string text_field(const nlohmann::json& body, const char* key);
 const char* alias_or(const nlohmann::json& body, const char* key, const char* old_key);
 
 void send_json(httplib::Response& response, const nlohmann::json& body, int status = 200);
+/// `text` with every path under the server's home made relative to it (users/NAME/projects/...):
+/// a web user never sees where on the server's disk the home is (issue #56).
+std::string without_server_paths(std::string text, const std::string& home);
 /// {"error": "..."} with the status of the exception's kind; a failure of the server itself
 /// says only that it failed (the details go to the server's log).
-void send_error(httplib::Response& response, const std::exception& error);
+void send_error(httplib::Response& response, const std::exception& error, const std::string& home = {});
 
 }  // namespace sd::web

@@ -25,7 +25,7 @@ void Routes::answer(WebContext& context, const httplib::Request& request, httpli
     Call call{request, response, home, std::move(user), std::move(body), context};
     route(call);
   } catch (const std::exception& e) {
-    send_error(response, e);
+    send_error(response, e, context.home.string());
   }
 }
 

@@ -20,6 +20,7 @@
 #include "app/errors.hpp"
 #include "storage/projects.hpp"
 #include "web/host_check.hpp"
+#include "web/http_io.hpp"
 #include "web/web_client.hpp"
 #include "workflow/design_helpers.hpp"
 #include "test_paths.hpp"
@@ -106,9 +107,12 @@ class WebSecurity : public ::testing::Test {
     const std::string missing = (root_ / "no-such-file.json").string();
     const auto reference = mission_answers(client, missing);
     const auto answers = mission_answers(client, path);
+    // A path in the server's home is quoted as its user would name it, never with the home's folder.
+    const std::string quoted = web::without_server_paths(path, (root_ / "home").string());
     for (std::size_t i = 0; i < answers.size(); ++i) {
       EXPECT_EQ(answers[i].status, 404) << path << ": " << answers[i].text;
-      EXPECT_EQ(words_without(answers[i], path), words_without(reference[i], missing)) << path;
+      EXPECT_EQ(words_without(answers[i], quoted), words_without(reference[i], missing)) << path;
+      EXPECT_EQ(answers[i].text.find((root_ / "home").string()), std::string::npos) << "the server's home in: " << answers[i].text;
       EXPECT_EQ(answers[i].text.find(kSecret), std::string::npos) << "a refusal quoted the file: " << answers[i].text;
     }
   }
@@ -117,6 +121,16 @@ class WebSecurity : public ::testing::Test {
   std::optional<RunningServer> server_;
   std::optional<WebClient> alice_, bob_;
 };
+
+TEST(WebMessages, NoMessageCarriesTheServersFolders) {
+  EXPECT_EQ(web::without_server_paths("mission file /srv/sd/users/ann/projects/lab/m.json is not valid", "/srv/sd"),
+            "mission file users/ann/projects/lab/m.json is not valid");
+  EXPECT_EQ(web::without_server_paths("cannot read /srv/sd/swarmdesign.db and /srv/sd/users/x", "/srv/sd/"),
+            "cannot read swarmdesign.db and users/x");
+  EXPECT_EQ(web::without_server_paths("/etc/passwd is not a file of your projects", "/srv/sd"),
+            "/etc/passwd is not a file of your projects");
+  EXPECT_EQ(web::without_server_paths("nothing here", ""), "nothing here");
+}
 
 TEST_F(WebSecurity, AFileOutsideOnesProjectsIsRefusedAlikeWhetherItExistsOrNot) {
   serve();

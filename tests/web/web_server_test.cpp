@@ -986,8 +986,13 @@ TEST_F(WebServer, AnExecRunsInAPseudoRealitySampleAndScoresWhatThatRobotModelSco
   expect_field_refused(from_bob, "pseudo_reality");
   const auto elsewhere = (root_ / "home" / "users" / "alice" / "none.json").string();
   const Answer missing = bob_->post("/api/runs", {{"text", kFsm}, {"mission", "aac"}, {"seed", 3}, {"pseudo_reality", elsewhere}});
+  // Both quoted relative to the home: no message shows where the server keeps it.
+  const std::string home = (root_ / "home").string() + "/";
   std::string said = from_bob.body.value("error", "");
-  said.replace(said.find(alices.string()), alices.string().size(), elsewhere);
+  ASSERT_EQ(said.find(home), std::string::npos) << said;
+  const std::string quoted = alices.string().substr(home.size()), quoted_elsewhere = elsewhere.substr(home.size());
+  ASSERT_NE(said.find(quoted), std::string::npos) << said;
+  said.replace(said.find(quoted), quoted.size(), quoted_elsewhere);
   EXPECT_EQ(missing.body.value("error", ""), said);
 }
 
