@@ -46,7 +46,7 @@ int running_experiments(storage::Database& db, std::int64_t user_id) {
 /// Someone else's account: an administrator acts on others, never on themselves here.
 storage::AccountRow other_account(Home& home, const storage::User& admin, const std::string& name, const char* what) {
   require_admin(home, admin);
-  const storage::AccountRow row = storage::account_row(home.workspace().database(), name);
+  storage::AccountRow row = storage::account_row(home.workspace().database(), name);
   if (row.user.id == admin.id) throw InvalidRequest(std::string("you cannot ") + what + " your own account");
   return row;
 }
@@ -92,7 +92,7 @@ void set_account_disabled(Home& home, const storage::User& admin, const std::str
 
 std::string reset_account_password(Home& home, const storage::User& admin, const std::string& name) {
   const storage::AccountRow row = other_account(home, admin, name, "reset the password of");
-  const std::string password = one_time_password();
+  std::string password = one_time_password();
   storage::set_password(home.workspace().database(), row.user, password, std::nullopt);
   return password;
 }
