@@ -33,8 +33,9 @@ TEST_F(home_backup, ABackupTakenWhileADesignRunsRestoresElsewhereAndTheDesignRes
   // The mission file lives in the project, named by the home's absolute path: it must follow.
   const fs::path mission = write_short_mission(home() / "users" / "alice" / "projects" / "lab", 4);
   run_ok({"set-mission", mission.string()});
-  run_ok({"set-budget", "2000"});
-  const json reference = json::parse(run_ok({"design", "--mission", mission.string(), "--budget", "2000", "--fsm",
+  // Long enough that the backup, taken at the fourth checkpoint, is over well before the design.
+  run_ok({"set-budget", "4000"});
+  const json reference = json::parse(run_ok({"design", "--mission", mission.string(), "--budget", "4000", "--fsm",
                                              "--chocolate", "--seed", "3", "--threads", "1", "--out",
                                              (scratch() / "reference").string(), "--json"}));
 
