@@ -74,7 +74,7 @@ experiments::Protocol requested_protocol(const ProtocolRequest& r, const FileSco
   try {
     experiments::Protocol protocol;
     if (!r.builtin.empty()) protocol = experiments::builtin_protocol(r.builtin, r.evostick);
-    else if (!r.text.empty()) protocol = experiments::parse_protocol_text(r.text, "protocol");
+    else if (!r.text.empty()) protocol = experiments::parse_protocol_text(r.text, "");  // a text: no file to name
     else if (scope.is_local()) protocol = experiments::read_protocol_file(r.file);  // its own refusals, as ever
     else protocol = experiments::parse_protocol_text(scope.read(r.file, "protocol file"), r.file);
     return experiments::with_overrides(std::move(protocol), r.overrides);

@@ -244,18 +244,20 @@ Protocol read_protocol_file(const std::string& path) {
 }
 
 Protocol parse_protocol_text(const std::string& text, const std::string& path) {
+  // A protocol's own errors already start "protocol: "; a text with no file says nothing more.
+  const std::string where = path.empty() ? std::string() : path + ": ";
   nlohmann::json document;
   try {
     document = nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true);
   } catch (const nlohmann::json::parse_error& e) {
-    throw ProtocolError(path + ": not a JSON document: " + json_syntax_error(e, text));
+    throw ProtocolError((path.empty() ? "protocol: " : where) + "not a JSON document: " + json_syntax_error(e, text));
   } catch (const nlohmann::json::out_of_range& e) {
-    throw ProtocolError(path + ": not a JSON document: " + json_number_error(e));
+    throw ProtocolError((path.empty() ? "protocol: " : where) + "not a JSON document: " + json_number_error(e));
   }
   try {
     return protocol_from_json(document);
   } catch (const ProtocolError& e) {
-    throw ProtocolError(path + ": " + e.what());
+    throw ProtocolError(where + e.what());
   }
 }
 

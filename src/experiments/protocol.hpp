@@ -69,7 +69,8 @@ Protocol protocol_from_json(const nlohmann::json& document);
 nlohmann::json to_json(const Protocol& protocol);
 /// A protocol file (JSON, comments allowed); ProtocolError naming the file and the field.
 Protocol read_protocol_file(const std::string& path);
-/// The same for a protocol's text, its errors naming `path`.
+/// The same for a protocol's text, its errors naming `path` (empty: a text of no file, as a page or
+/// Python sends it).
 Protocol parse_protocol_text(const std::string& text, const std::string& path);
 
 /// What the command line may change of a protocol.

@@ -129,6 +129,10 @@ def test_an_experiments_plan_is_the_clis_document(account, tmp_path):
     assert account.plan_experiment(file=own) == account.plan_experiment(text=own.read_text())
     with pytest.raises(sd.InvalidRequestError, match="not both"):
         account.plan_experiment("validation", text=own.read_text())
+    # A protocol's own error, said once (the page showed "protocol: protocol: ...").
+    with pytest.raises(sd.InvalidRequestError) as refused:
+        account.plan_experiment(text='{"name": 3}')
+    assert str(refused.value) == "protocol: name: must be a non-empty string"
     with pytest.raises(sd.InvalidRequestError, match="designs must be a whole number"):
         account.plan_experiment("validation", designs="many")
     with pytest.raises(TypeError, match="unknown experiment choice 'budget'"):
