@@ -303,7 +303,9 @@ CommandRegistrar registrar{45, [](CLI::App& app, Context&) {
   o->scale_option =
       cmd->add_option("--budget-scale", o->budget_scale, "Multiply every budget (e.g. 0.05 for a quick look; default 1)");
   o->eval_seeds_option =
-      cmd->add_option("--eval-seeds", o->eval_seeds, "Fresh seeds each final design is assessed on (default 20)");
+      cmd->add_option("--assessment-seeds,--eval-seeds", o->eval_seeds,
+                      "Fresh seeds each final design is assessed on (default 20; the protocol's and the page's "
+                      "assessment_seeds; --eval-seeds is its first name, kept for one release)");
   cmd->add_option("--seed", o->seed, "Seed every design's seed derives from (default 1)");
   cmd->add_option("--name", o->rename, "Store it under another name (to keep several variants of one protocol)");
   cmd->add_option("--pseudo-reality", o->pseudo_reality,

@@ -272,7 +272,7 @@ Protocol with_overrides(Protocol protocol, const ProtocolOverrides& o) {
   }
   if (o.assessment_seeds) {
     if (*o.assessment_seeds < 1 || *o.assessment_seeds > 100000)
-      throw ProtocolError("--eval-seeds must be between 1 and 100000");
+      throw ProtocolError("assessment seeds (--assessment-seeds) must be between 1 and 100000");
     protocol.assessment_seeds = *o.assessment_seeds;
   }
   if (o.budget_scale) {
