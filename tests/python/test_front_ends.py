@@ -139,7 +139,7 @@ def test_an_experiments_plan_is_the_clis_document(account, tmp_path):
         account.plan_experiment("validation", budget=10)
 
 
-def test_an_experiment_runs_from_python_reports_as_the_clis_and_resumes(account):
+def test_an_experiment_runs_from_python_reports_as_the_clis_and_resumes(account, tmp_path):
     steps = []
     started = account.run_experiment(text=mini_protocol(account, "py-mini"), threads=2, progress=steps.append)
     assert started["where"] == "process" and not started["resumed"] and not started["already_finished"]
@@ -149,7 +149,8 @@ def test_an_experiment_runs_from_python_reports_as_the_clis_and_resumes(account)
     again = account.run_experiment(text=mini_protocol(account, "py-mini"))
     assert again["already_finished"] and again["experiment"] == started["experiment"]
     report = account.experiment_report("py-mini")
-    assert report.document == json.loads(run_cli("report", "py-mini", "--json"))
+    # (its files into the test's own folder, never the working directory)
+    assert report.document == json.loads(run_cli("report", "py-mini", "--json", "--out", tmp_path / "report"))
     # Nothing runs it now: stopping says so, as the page's Stop does.
     with pytest.raises(sd.ConflictError):
         account.stop_experiment("py-mini")
