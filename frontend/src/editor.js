@@ -183,11 +183,16 @@ export function initEditor({ onExec }) {
 
   // ---- control software saved in a project ----
   const projectSelect = $('software-project');
+  // The list is swapped in one step once the answer is here (never emptied while it loads), and an
+  // answer that a later refresh overtook is dropped, so two quick refreshes never show both lists.
+  let softwareGeneration = 0;
   async function refreshSoftware() {
     const list = $('software-list');
-    list.replaceChildren();
-    if (!projectSelect.value) return;
+    const generation = ++softwareGeneration;
+    if (!projectSelect.value) { list.replaceChildren(); return; }
     const items = await api(`/api/projects/${encodeURIComponent(projectSelect.value)}/software`);
+    if (generation !== softwareGeneration) return;
+    const rows = [];
     for (const item of items) {
       const project = projectSelect.value;
       const remove = el('button', { type: 'button', class: 'icon', testid: `software-delete-${item.name}`, text: '✕', title: `delete ${item.name}`,
@@ -197,10 +202,11 @@ export function initEditor({ onExec }) {
           try { await api(`/api/projects/${encodeURIComponent(project)}/software/${encodeURIComponent(item.name)}/delete`, { body: {} }); } catch { return; }
           await refreshSoftware();
         } });
-      list.append(el('li', { title: item.text, testid: `software-${item.name}`, onclick: () => { textarea.value = item.text; parseText(item.text); } },
+      rows.push(el('li', { title: item.text, testid: `software-${item.name}`, onclick: () => { textarea.value = item.text; parseText(item.text); } },
         el('span', { text: item.name }), el('span', { class: 'muted small' }, 'load', remove)));
     }
-    if (!items.length) list.append(el('li', { class: 'muted small', text: 'nothing saved yet' }));
+    if (!items.length) rows.push(el('li', { class: 'muted small', text: 'nothing saved yet' }));
+    list.replaceChildren(...rows);
   }
   async function refreshProjects() {
     const projects = await api('/api/projects');
