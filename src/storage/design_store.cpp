@@ -7,6 +7,7 @@
 #include <cmath>
 #include <ctime>
 
+#include "core/private_files.hpp"
 #include "storage/power_cut.hpp"
 
 namespace sd::storage {
@@ -135,6 +136,7 @@ DesignStore DesignStore::create(const std::filesystem::path& folder, const Desig
   const std::filesystem::path draft = folder / "design.db.new";
   PowerCutWindow power_cut;  // the tests' and the benchmark's kill inside this write; nothing otherwise
   for (const char* suffix : {"", "-wal", "-shm", "-journal"}) std::filesystem::remove(draft.string() + suffix);
+  create_private_file(draft);  // a design's race data is its owner's alone, as the home's database is
   try {
     Database db(draft, true);
     Transaction t(db);

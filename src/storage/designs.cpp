@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "core/private_files.hpp"
 #include "storage/clock.hpp"
 #include "storage/errors.hpp"
 #include "storage/folder_removal.hpp"
@@ -95,7 +96,7 @@ Design Designs::start(const DesignRequest& request) {
   const std::int64_t id = db.last_insert_id();
   const auto folder = project_folder / "designs" / std::to_string(id);
   db.prepare("UPDATE designs SET path = ? WHERE id = ?").bind(1, folder.string()).bind(2, id).run();
-  std::filesystem::create_directories(workspace_.resolve(folder));
+  create_private_folders(workspace_.resolve(folder));
   transaction.commit();
   return get(id);
 }

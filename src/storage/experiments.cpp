@@ -1,5 +1,6 @@
 #include "storage/experiments.hpp"
 
+#include "core/private_files.hpp"
 #include "storage/clock.hpp"
 #include "storage/errors.hpp"
 #include "storage/lease.hpp"
@@ -112,7 +113,7 @@ std::pair<Experiment, bool> Experiments::start(const std::string& name, const st
     insert.bind(1, id).bind(2, d.mission).bind(3, d.condition).bind(4, d.replicate).bind(5, d.method)
         .bind(6, d.architectures).bind(7, d.flavours).bind(8, d.budget).bind(9, static_cast<std::int64_t>(d.seed)).run();
   }
-  std::filesystem::create_directories(workspace_.resolve(folder));
+  create_private_folders(workspace_.resolve(folder));
   transaction.commit();
   return {get_by_id(id), false};
 }

@@ -1,5 +1,6 @@
 #include "storage/projects.hpp"
 
+#include "core/private_files.hpp"
 #include "storage/clock.hpp"
 #include "storage/errors.hpp"
 #include "storage/folder_removal.hpp"
@@ -89,7 +90,7 @@ Project Projects::create(std::string_view name, const std::optional<ClusterConne
   // folder left by an earlier project of the same name is reused.
   const std::filesystem::path folder = workspace_.resolve(relative);
   const bool existed = std::filesystem::exists(folder);
-  std::filesystem::create_directories(folder);
+  create_private_folders(folder);
   try {
     transaction.commit();
   } catch (...) {

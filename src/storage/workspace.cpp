@@ -1,12 +1,7 @@
 #include "storage/workspace.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <system_error>
-
 #include "core/home.hpp"
+#include "core/private_files.hpp"
 #include "storage/clock.hpp"
 #include "storage/errors.hpp"
 #include "storage/schema.hpp"
@@ -16,32 +11,13 @@
 namespace sd::storage {
 
 namespace {
-// The home holds password hashes and session tokens: private to its owner when we create it.
-void create_private_directory(const std::filesystem::path& folder) {
-  if (std::filesystem::exists(folder)) return;
-  std::filesystem::create_directories(folder);
-  std::filesystem::permissions(folder, std::filesystem::perms::owner_all, std::filesystem::perm_options::replace);
-}
-
-// Create the database file ourselves so that it is 0600 from its first byte (SQLite would
-// use the umask); SQLite gives its -wal and -shm files the same mode. An empty file is a
-// valid empty database.
-void create_private_file(const std::filesystem::path& path) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
-  if (fd < 0) {
-    if (errno == EEXIST) return;  // another process was first
-    throw std::system_error(errno, std::generic_category(), "cannot create " + path.string());
-  }
-  ::close(fd);
-}
-
 const char* const kSignInHint = "sign in with: swarmdesign sign-in USER";
 }  // namespace
 
 Workspace::Workspace() : Workspace(sd::swarmdesign_home()) {}
 
 Workspace::Workspace(std::filesystem::path home) : home_(std::move(home)) {
-  create_private_directory(home_);
+  create_private_folders(home_);
   const auto path = home_ / "swarmdesign.db";
   create_private_file(path);
   database_ = std::make_unique<Database>(path);

@@ -3,6 +3,7 @@
 // run-design, and requests that must change nothing.
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/stat.h>
 
 #include <sstream>
 
@@ -43,6 +44,9 @@ int count_lines_starting(const std::string& text, const std::string& prefix) {
 }
 
 TEST_F(run_design, TheWholeWorkflowFromSignUpToATestedDesign) {
+  // A usual umask, which would leave folders 0755 and files 0644: the CLI makes the home
+  // private whatever it is, as the server does (the CLI processes inherit it).
+  const mode_t umask_before = ::umask(022);
   project_with_budget(1100);
   EXPECT_NE(run_ok({"status"}).find("no design yet"), std::string::npos);
   const std::string out = run_ok({"run-design", "--fsm", "--chocolate", "--seed", "3", "--threads", "2"});
@@ -81,6 +85,18 @@ TEST_F(run_design, TheWholeWorkflowFromSignUpToATestedDesign) {
   EXPECT_EQ(count_lines_starting(tested, "Mean "), 1);
   const std::string given = run_ok({"testDesign", "--seeds", "4-5", "--fsm-config", "--nstates", "1", "--s0", "10", "--rwm0", "5"});
   EXPECT_EQ(count_lines_starting(given, "Score "), 2) << given;
+
+  ::umask(umask_before);
+  const auto mode = [](const std::filesystem::path& path) {
+    struct stat info {};
+    EXPECT_EQ(::lstat(path.c_str(), &info), 0) << path;
+    return info.st_mode & 0777;
+  };
+  EXPECT_EQ(mode(design_folder(1)), 0700u);
+  EXPECT_EQ(mode(design_folder(1) / "design.db"), 0600u);
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(home())) {
+    EXPECT_EQ(mode(entry.path()) & 077, 0u) << entry.path() << " is open to others";
+  }
 }
 
 TEST_F(run_design, AnEarlierDesignIsShownAndDeletedByItsNumberAndAProjectWhole) {
