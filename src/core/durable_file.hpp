@@ -32,7 +32,10 @@ inline void replace_file_durably(const std::filesystem::path& path, std::string_
     ::unlink(temporary.c_str());
     throw std::system_error(error, std::generic_category(), what + " " + file.string());
   };
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, mode);
+  // A fresh file, never one found at that name: a leftover of a killed save, or a link someone
+  // planted there, is removed, and O_EXCL refuses anything that appears in between.
+  ::unlink(temporary.c_str());
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, mode);
   if (fd < 0) fail("cannot create", temporary);
   bool ok = umask == Umask::Applies || ::fchmod(fd, mode) == 0;
   for (std::size_t written = 0; ok && written < content.size();) {
