@@ -14,7 +14,8 @@
 namespace sd::app {
 
 LaunchedExperiment BackgroundExperiments::start(Home& home, const storage::User& user, const storage::Project& project,
-                                                const ExperimentLaunch&, PlannedExperiment plan) {
+                                                const ExperimentLaunch& launch, PlannedExperiment plan) {
+  refuse_cluster_job_settings(launch);
   std::lock_guard lock(start_mutex_);
   const BackgroundJobs::Counts running = jobs_.running(user.id);
   if (running.mine >= kPerUser)
@@ -31,9 +32,10 @@ LaunchedExperiment BackgroundExperiments::start(Home& home, const storage::User&
   out.started = *started;
   out.plan = std::move(plan);
   if (started->already_finished) return out;
-  jobs_.launch(started->experiment.id, user.id, started->project.id, [started](const CancelToken& cancel) {
+  const unsigned threads = launch.threads;  // 0: the server's pool, all cores
+  jobs_.launch(started->experiment.id, user.id, started->project.id, [started, threads](const CancelToken& cancel) {
     try {
-      run_experiment(*started, {.threads = 0, .evaluator = nullptr, .observer = nullptr, .cancel = &cancel});
+      run_experiment(*started, {.threads = threads, .evaluator = nullptr, .observer = nullptr, .cancel = &cancel});
     } catch (const std::exception& e) {  // the experiment stays interrupted; the server goes on
       std::cerr << "experiment " << started->experiment.name << " failed: " << e.what() << "\n";
     }

@@ -48,6 +48,10 @@ class ExperimentBackend {
                            const storage::Experiment& experiment) = 0;
 };
 
+/// InvalidRequest when `launch` carries sbatch settings for a project that runs on this machine
+/// (the CLI's and the server's backends refuse them alike).
+void refuse_cluster_job_settings(const ExperimentLaunch& launch);
+
 /// SIGTERM to the CLI process of this machine that runs the experiment (all it did is durable:
 /// it resumes where it was), once it has ended. Conflict when it does not run, or runs in
 /// another server or on another machine.

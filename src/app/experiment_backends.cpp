@@ -22,9 +22,7 @@ class LocalExperiments final : public ExperimentBackend {
  public:
   LaunchedExperiment start(Home& home, const storage::User& user, const storage::Project& project,
                            const ExperimentLaunch& launch, PlannedExperiment plan) override {
-    if (launch.job.given())
-      throw InvalidRequest("--nodes, --ntasks, --cpus-per-task, --time, --partition and --account are for a cluster "
-                           "project; this one runs on this machine");
+    refuse_cluster_job_settings(launch);
     LaunchedExperiment out;
     out.where = ExperimentWhere::this_process;
     out.started = start_experiment(home, user, plan, {project.name, storage::owner_text(storage::local_process())});
@@ -62,6 +60,12 @@ LocalExperiments local_experiments;
 SlurmExperiments slurm_experiments;
 
 }  // namespace
+
+void refuse_cluster_job_settings(const ExperimentLaunch& launch) {
+  if (launch.job.given())
+    throw InvalidRequest("--nodes, --ntasks, --cpus-per-task, --time, --partition and --account are for a cluster "
+                         "project; this one runs on this machine");
+}
 
 std::string stop_experiment_process(const storage::Experiment& e) {
   if (e.state != storage::DesignState::running || !storage::owner_alive(e.owner, e.heartbeat_at, storage::unix_now(), 0))

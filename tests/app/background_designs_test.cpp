@@ -9,6 +9,10 @@
 
 #include "app/accounts.hpp"
 #include "app/background_designs.hpp"
+#include "app/background_experiments.hpp"
+#include "app/errors.hpp"
+#include "app/experiment_backends.hpp"
+#include "storage/experiments.hpp"
 #include "app/projects.hpp"
 #include "storage/designs.hpp"
 #include "storage/projects.hpp"
@@ -53,6 +57,37 @@ TEST(BackgroundDesigns, ADesignResumedTheMomentItReadsInterruptedRunsAgain) {
   const auto last = storage::Designs(home.workspace(), storage::Projects(home.workspace(), user).get("p")).latest();
   EXPECT_EQ(last->id, id);
   EXPECT_EQ(last->state, storage::DesignState::interrupted);
+  std::filesystem::remove_all(root);
+}
+
+// The same request answers alike in the CLI and in a server: sbatch settings for a project
+// that runs on this machine are refused by both backends, before anything is recorded.
+TEST(BackgroundExperiments, SbatchSettingsForALocalProjectAreRefusedAsTheCliRefusesThem) {
+  const auto root = std::filesystem::temp_directory_path() / (std::string("sd-background-exp-") + std::to_string(::getpid()));
+  std::filesystem::remove_all(root);
+  app::Home home(root);
+  const storage::User user = app::sign_up(home, "alice", "correct horse battery");
+  app::create_project(home, user, "p", std::nullopt);
+  app::select_project(home, user, "p");
+  app::ExperimentLaunch launch;
+  launch.protocol.builtin = "validation";
+  launch.protocol.overrides.missions = std::vector<std::string>{"aac"};
+  launch.job.partition = "long";
+  app::BackgroundExperiments server("test");
+  std::string said_by_server, said_by_cli;
+  try {
+    app::launch_experiment(home, user, launch, &server);
+  } catch (const app::InvalidRequest& e) {
+    said_by_server = e.what();
+  }
+  try {
+    app::launch_experiment(home, user, launch, nullptr);
+  } catch (const app::InvalidRequest& e) {
+    said_by_cli = e.what();
+  }
+  EXPECT_NE(said_by_server.find("are for a cluster project"), std::string::npos) << said_by_server;
+  EXPECT_EQ(said_by_server, said_by_cli);
+  EXPECT_TRUE(storage::Experiments(home.workspace(), storage::Projects(home.workspace(), user).get("p")).list().empty());
   std::filesystem::remove_all(root);
 }
 
