@@ -24,6 +24,7 @@ cluster_packages=(openmpi-bin libopenmpi-dev)
 test_packages=(
   libgtest-dev libgmock-dev libbenchmark-dev  # the test suite and bench/
   clang libclang-rt-14-dev  # scripts/sanitizers.sh: ASan, UBSan, TSan and libFuzzer runtimes
+  lld  # the sanitizer trees link with it: cmake/precompiled_headers.cmake says why
   clang-tidy  # scripts/tidy.sh, with the repository's .clang-tidy
   chromium  # the web app's browser tests (headless)
   ffmpeg  # ffprobe checks the web app's downloaded run videos (browser tests)
