@@ -1,5 +1,7 @@
 #include "app/cluster_designs.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <chrono>
 #include <functional>
 #include <thread>

@@ -12,7 +12,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
 
 #include "app/design_backend.hpp"
 #include "app/home.hpp"

@@ -1,5 +1,7 @@
 #include "app/cluster_experiments.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <map>
 
 #include "app/design_method.hpp"

@@ -2,7 +2,6 @@
 // The one place that chooses a design's backend (design_backend.hpp): where a project's new
 // designs run, which backend can stop a running one (that of its owner, whoever started it),
 // and which brings it up to date for `status`.
-#include <nlohmann/json.hpp>
 
 #include <cstdint>
 #include <optional>

@@ -10,7 +10,7 @@
 //
 // A new method: its name in design/methods.hpp, a class here (app/method_<name>.cpp) and one
 // line in the registry (app/design_methods.cpp).
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <cstdint>
 #include <filesystem>

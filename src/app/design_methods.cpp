@@ -1,5 +1,8 @@
 // The registry of design methods: every name of design/methods.hpp with its implementation.
 #include "app/design_method.hpp"
+
+#include <nlohmann/json.hpp>
+
 #include "app/documents.hpp"
 #include "app/errors.hpp"
 #include "storage/design_store.hpp"

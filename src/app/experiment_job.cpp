@@ -1,5 +1,7 @@
 #include "app/experiment_job.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <map>

@@ -9,7 +9,6 @@
 //   PlannedExperiment plan = plan_experiment(protocol);          // every refusal, no side effect
 //   StartedExperiment e = start_experiment(home, user, plan, {.owner = ...});
 //   run_experiment(e, {.threads = 2, .observer = &display});
-#include <nlohmann/json.hpp>
 
 #include <cstdint>
 #include <filesystem>

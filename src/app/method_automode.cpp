@@ -1,6 +1,9 @@
 // AutoMoDe as a design method: Iterated F-Race over the condition's modular design space, made
 // by the design job (design_job.hpp) in the design's folder, where design.db keeps everything.
 #include "app/design_job.hpp"
+
+#include <nlohmann/json.hpp>
+
 #include "app/design_method.hpp"
 #include "app/documents.hpp"
 #include "app/errors.hpp"

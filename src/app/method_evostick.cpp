@@ -1,6 +1,8 @@
 // EvoStick as a design method: whole generations of one network evolved by the evolution job
 // (evolution_job.hpp), its state in DIR/evolution.json after every generation and its final
 // document, with the history convergence is read from, in DIR/evostick.json.
+#include <nlohmann/json.hpp>
+
 #include <fstream>
 
 #include "app/design_method.hpp"

@@ -4,7 +4,6 @@
 // (design_job.hpp) whose row in the designs table is leased by the job that runs it
 // (storage/lease.hpp): renewed while it runs, released when it is cancelled, finished or
 // failed when it ends, and found interrupted when its owner dies.
-#include <nlohmann/json.hpp>
 
 #include <cstdint>
 #include <filesystem>

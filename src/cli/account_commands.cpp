@@ -1,4 +1,5 @@
 // Accounts: sign-up, sign-in, exit, show-users (thesis spellings as aliases).
+#include <nlohmann/json.hpp>
 #include <CLI/CLI.hpp>
 #include <signal.h>
 #include <termios.h>

@@ -1,6 +1,7 @@
 // Across the reality gap (Ligot & Birattari 2020): `assess` runs control software in the
 // design model and in pseudo-realities and reports the drop and the rank changes;
 // `pseudo-realities` lists the shipped specifications and shows samples of any of them.
+#include <nlohmann/json.hpp>
 #include <CLI/CLI.hpp>
 
 #include <cmath>

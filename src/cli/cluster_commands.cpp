@@ -1,5 +1,6 @@
 // A project's running design stopped (`stop-design`, through its backend: app/design_backends.hpp),
 // and what a cluster project's cluster lacks (`cluster-check`, app/cluster_designs.hpp).
+#include <nlohmann/json.hpp>
 #include <CLI/CLI.hpp>
 
 #include <iostream>

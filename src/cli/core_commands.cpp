@@ -1,4 +1,5 @@
 // Core commands, no account needed: missions, mission show, evaluate, show-config.
+#include <nlohmann/json.hpp>
 #include <CLI/CLI.hpp>
 
 #include <cstdio>

@@ -1,6 +1,7 @@
 // Designing without an account: `design` (run or resume a design process in a folder),
 // `design-status` (where a design folder stands; a cluster project asks it of its jobs) and
 // `irace-export` (let the real irace 3.5 drive SwarmDesign's evaluator).
+#include <nlohmann/json.hpp>
 #include <CLI/CLI.hpp>
 
 #include <filesystem>

@@ -1,4 +1,5 @@
 // Projects of the signed-in user: new-project, show-projects, select-project, active-project.
+#include <nlohmann/json.hpp>
 #include <CLI/CLI.hpp>
 
 #include <algorithm>

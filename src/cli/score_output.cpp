@@ -1,5 +1,7 @@
 #include "cli/score_output.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <iostream>
 
 #include "app/documents.hpp"

@@ -3,6 +3,8 @@
 // (irace's recovery file; Optuna's storage behind an interface). The optimiser only talks to
 // this seam: the design database (app/design_db_checkpoints, over storage/design_store) and
 // the in-memory store of the tests implement it.
+#include <nlohmann/json.hpp>
+
 #include <cstdint>
 #include <optional>
 #include <span>

@@ -1,5 +1,7 @@
 #include "design/state.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 #include <limits>
 #include <map>

@@ -1,5 +1,7 @@
 #include "experiments/protocol.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>

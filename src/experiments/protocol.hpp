@@ -4,7 +4,7 @@
 // how many fresh seeds assess each final design. The thesis' three experiments are built in;
 // a user writes their own as a JSON file of the same shape
 // (`swarmdesign experiment --file F`, format in src/experiments/README.md).
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <cstdint>
 #include <optional>

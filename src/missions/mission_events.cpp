@@ -9,7 +9,7 @@ namespace {
 int read_selector(const Field& parent, const char* key, int count, const char* what) {
   if (!parent.has(key)) return MissionEvent::kEvery;
   const Field f = parent.at(key);
-  if (f.raw().is_string()) {
+  if (f.is_text()) {
     const std::string s = f.text();
     if (s == "every") return MissionEvent::kEvery;
     if (s == "random") return MissionEvent::kRandom;
@@ -26,7 +26,7 @@ MissionEvent read_mission_event(const Field& f, const LedArena& led_arena, int m
   event.name = f.at("name").text();
   if (event.name.empty()) f.at("name").fail("must not be empty");
   const Field tick = f.at("tick");
-  if (tick.raw().is_object()) {
+  if (tick.is_object()) {
     tick.only({"uniform"});
     const Field range = tick.at("uniform");
     if (range.items() != 2) range.fail("expected [first, last]");

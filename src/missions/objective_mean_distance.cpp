@@ -11,8 +11,7 @@ namespace sd {
 namespace {
 
 PointSampler read_points(const Field& f) {
-  f.expect_object();
-  if (f.raw().size() != 1) f.fail("expected exactly one of polar_disc, on_circle, uniform_in");
+  f.single_key("polar_disc, on_circle, uniform_in");
   PointSampler s;
   if (f.has("uniform_in")) {
     s.kind = PointSampler::Kind::UniformIn;

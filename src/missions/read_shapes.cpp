@@ -15,13 +15,6 @@ constexpr NamedColor kColors[] = {{"black", 0x000000}, {"white", 0xffffff}, {"gr
                                   {"red", 0xff0000},   {"green", 0x00ff00}, {"blue", 0x0000ff},
                                   {"yellow", 0xffff00}, {"magenta", 0xff00ff}, {"cyan", 0x00ffff}};
 
-/// The object must hold exactly one of the shape keys; returns which.
-std::string single_key(const Field& f, const std::string& expected) {
-  f.expect_object();
-  if (f.raw().size() != 1) f.fail("expected exactly one of " + expected);
-  return f.raw().begin().key();
-}
-
 }  // namespace
 
 std::uint32_t read_color(const Field& f) {
@@ -40,7 +33,7 @@ double gray_of(std::uint32_t rgb) {
 }
 
 Region read_region(const Field& f) {
-  const std::string kind = single_key(f, "circle, rectangle, polygon");
+  const std::string kind = f.single_key("circle, rectangle, polygon");
   if (kind == "circle") {
     const Field c = f.at("circle");
     c.only({"center", "radius", "inclusive"});
@@ -66,7 +59,7 @@ Region read_region(const Field& f) {
 }
 
 Zone read_zone(const Field& f) {
-  const std::string kind = single_key(f, "circle, rectangle, polygon, ring, limits");
+  const std::string kind = f.single_key("circle, rectangle, polygon, ring, limits");
   if (kind == "ring") {
     const Field r = f.at("ring");
     r.only({"center", "radius", "half_width"});
@@ -95,7 +88,7 @@ RobotFilter read_robot_filter(const Field& parent, const char* key) {
   RobotFilter filter;
   if (!parent.has(key)) return filter;
   const Field f = parent.at(key);
-  const std::string kind = single_key(f, "in, not_in");
+  const std::string kind = f.single_key("in, not_in");
   if (kind == "in") {
     filter.kind = RobotFilter::Kind::InZone;
     filter.zones.push_back(read_zone(f.at("in")));

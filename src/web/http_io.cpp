@@ -1,5 +1,7 @@
 #include "web/http_io.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <iostream>
 
 #include "core/json_syntax.hpp"

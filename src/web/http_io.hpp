@@ -3,7 +3,7 @@
 // of the application's error kind (src/app/README.md), and the HTTP-only refusals (401, 403,
 // 413) that have no application kind.
 #include <httplib.h>
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <exception>
 #include <stdexcept>

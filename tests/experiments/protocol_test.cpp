@@ -1,6 +1,7 @@
 // Protocols as data: the thesis' three experiments, a protocol file read
 // back exactly, and every malformed field refused with its path.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "experiments/protocol.hpp"
 #include "refusal.hpp"

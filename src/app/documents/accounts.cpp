@@ -1,5 +1,7 @@
 #include "app/documents/accounts.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include "storage/clock.hpp"
 
 namespace sd::app {

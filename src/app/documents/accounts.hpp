@@ -1,6 +1,6 @@
 #pragma once
 // The documents of accounts and projects: a project, a user's projects, the users.
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <vector>
 

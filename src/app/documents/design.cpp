@@ -1,5 +1,7 @@
 #include "app/documents/design.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include "core/json_integer.hpp"
 #include "storage/clock.hpp"
 

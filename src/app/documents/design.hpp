@@ -2,7 +2,7 @@
 // The documents of a design: its final report, its live and stored progress, its race log and
 // convergence, its row in a project, its Slurm job, and `status` (all of those a project's
 // design has), plus the one document read back: the stored progress a cluster job prints.
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <vector>
 

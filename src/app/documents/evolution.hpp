@@ -2,7 +2,7 @@
 // The document of an EvoStick evolution for a mission (`evostick --mission --json`, and an
 // experiment's EvoStick design, whose convergence is read from its history). A module's
 // evolution has data/arlequin's format (evostick/weight_document).
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <cstdint>
 #include <string>

@@ -1,5 +1,7 @@
 #include "app/documents/experiments.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include "app/cluster_experiments.hpp"
 #include "app/experiment_job.hpp"
 #include "experiments/protocol.hpp"

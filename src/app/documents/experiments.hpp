@@ -2,7 +2,7 @@
 // The documents of experiments: a plan with its duration estimate (`experiment --dry-run
 // --json`) and the experiments of a project with their progress (status, the web monitor).
 // The types are experiment_job's, which includes this file so its users get both.
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <string>
 #include <vector>

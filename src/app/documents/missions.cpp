@@ -1,5 +1,7 @@
 #include "app/documents/missions.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <numeric>
 

@@ -1,6 +1,6 @@
 #pragma once
 // The documents of missions and of scores on them: the catalogue, one mission, a batch of scores.
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <cstdint>
 #include <vector>

@@ -1,5 +1,7 @@
 #include "app/documents/reality.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 #include <sstream>
 

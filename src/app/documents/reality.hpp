@@ -1,7 +1,7 @@
 #pragma once
 // The documents of the reality gap: a robot model (the design model or a pseudo-reality
 // sample, every knob by its file name) and an assessment (app/assess_job).
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <string>
 
