@@ -62,10 +62,18 @@ start=$SECONDS
 
 # GCC's precompiled headers (-include cmake_pch.hxx with its .gch) mean nothing to clang: the
 # check reads a copy of the database without them, so each file is parsed as it is written.
+# A unity source (CMake's Unity/unity_N_cxx.cxx, which #includes several .cpp files) stands in
+# the database for the files it includes: each of them is checked alone, with its command.
 mkdir -p "$logs/db"
 python3 -c '
-import json, sys
-entries = json.load(open(sys.argv[1]))
+import json, re, sys
+entries = []
+for e in json.load(open(sys.argv[1])):
+    if not re.search(r"/Unity/unity_[0-9]+_cxx\.cxx$", e["file"]):
+        entries.append(e)
+        continue
+    for source in re.findall(r"^#include \"([^\"]+)\"", open(e["file"]).read(), re.M):
+        entries.append(dict(e, file=source, command=e["command"].replace(e["file"], source)))
 for e in entries:
     words, kept = e["command"].split(), []
     for i, w in enumerate(words):

@@ -16,7 +16,7 @@
 #include "storage/clock.hpp"
 #include "storage/passwords.hpp"
 
-namespace sd::cli {
+namespace sd::cli::account_commands {
 namespace {
 
 // ---- Reading a password -----------------------------------------------------------------
@@ -208,4 +208,4 @@ CommandRegistrar registrar{10, [](CLI::App& app, Context&) {
 }};
 
 }  // namespace
-}  // namespace sd::cli
+}  // namespace sd::cli::account_commands

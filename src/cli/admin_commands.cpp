@@ -20,7 +20,7 @@
 
 #include <unistd.h>
 
-namespace sd::cli {
+namespace sd::cli::admin_commands {
 namespace {
 
 struct Options {
@@ -188,4 +188,4 @@ CommandRegistrar registrar{70, [](CLI::App& app, Context&) {
 }};
 
 }  // namespace
-}  // namespace sd::cli
+}  // namespace sd::cli::admin_commands

@@ -21,7 +21,7 @@
 #include "cli/progress_line.hpp"
 #include "control/config_string.hpp"
 
-namespace sd::cli {
+namespace sd::cli::assess_commands {
 namespace {
 
 struct AssessOptions {
@@ -179,4 +179,4 @@ const CommandRegistrar registrar{35, [](CLI::App& app, Context& context) {
                                  }};
 
 }  // namespace
-}  // namespace sd::cli
+}  // namespace sd::cli::assess_commands

@@ -11,7 +11,7 @@
 #include "app/design_backends.hpp"
 #include "cli/command_registry.hpp"
 
-namespace sd::cli {
+namespace sd::cli::cluster_commands {
 namespace {
 
 struct Options {
@@ -81,4 +81,4 @@ CommandRegistrar registrar{42, [](CLI::App& app, Context&) {
 }};
 
 }  // namespace
-}  // namespace sd::cli
+}  // namespace sd::cli::cluster_commands

@@ -1,6 +1,8 @@
 #pragma once
 // Every group of subcommands lives in its own file and registers itself here, so adding a
-// command never touches main.cpp.
+// command never touches main.cpp. A command file keeps its options and helpers in a namespace
+// of its own (sd::cli::<file name>): the command files compile as a unity build, one compile
+// of CLI11's inline code instead of one per file (src/cli/CMakeLists.txt).
 #include <functional>
 #include <stdexcept>
 #include <string>

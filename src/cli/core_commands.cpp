@@ -20,7 +20,7 @@
 #include "missions/catalogue.hpp"
 #include "missions/svg.hpp"
 
-namespace sd::cli {
+namespace sd::cli::core_commands {
 
 namespace {
 
@@ -162,4 +162,4 @@ const CommandRegistrar registrar{10, [](CLI::App& app, Context& context) {
                                  }};
 
 }  // namespace
-}  // namespace sd::cli
+}  // namespace sd::cli::core_commands

@@ -15,7 +15,7 @@
 #include "storage/designs.hpp"
 #include "cli/command_registry.hpp"
 
-namespace sd::cli {
+namespace sd::cli::delete_commands {
 namespace {
 
 struct Options {
@@ -92,4 +92,4 @@ CommandRegistrar registrar{21, [](CLI::App& app, Context&) {
 }};
 
 }  // namespace
-}  // namespace sd::cli
+}  // namespace sd::cli::delete_commands

@@ -18,7 +18,7 @@
 #include "control/config_string.hpp"
 #include "storage/design_status.hpp"
 
-namespace sd::cli {
+namespace sd::cli::design_commands {
 namespace {
 
 struct DesignOptions {
@@ -165,4 +165,4 @@ const CommandRegistrar registrar{15, [](CLI::App& app, Context&) {
                                  }};
 
 }  // namespace
-}  // namespace sd::cli
+}  // namespace sd::cli::design_commands

@@ -15,7 +15,7 @@
 #include "control/config_string.hpp"
 #include "evostick/module_training.hpp"
 
-namespace sd::cli {
+namespace sd::cli::evostick_commands {
 namespace {
 
 struct Options {
@@ -122,4 +122,4 @@ void register_evostick(CLI::App& app, Context& context) {
 const CommandRegistrar registrar{30, [](CLI::App& app, Context& context) { register_evostick(app, context); }};
 
 }  // namespace
-}  // namespace sd::cli
+}  // namespace sd::cli::evostick_commands

@@ -27,7 +27,7 @@
 #include "cli/web_root.hpp"
 #include "storage/lease.hpp"
 
-namespace sd::cli {
+namespace sd::cli::experiment_commands {
 namespace {
 
 struct ExperimentOptions {
@@ -374,4 +374,4 @@ CommandRegistrar registrar{45, [](CLI::App& app, Context&) {
 }};
 
 }  // namespace
-}  // namespace sd::cli
+}  // namespace sd::cli::experiment_commands

@@ -27,6 +27,9 @@ void print_argos_line(const ControlSoftware& software, const std::string& indent
             << indent << "  " << line.result.text << "\n";
 }
 
+}  // namespace sd::cli
+
+namespace sd::cli::export_commands {
 namespace {
 
 struct ExportOptions {
@@ -176,4 +179,4 @@ const CommandRegistrar registrar{12, [](CLI::App& app, Context& context) {
 }};
 
 }  // namespace
-}  // namespace sd::cli
+}  // namespace sd::cli::export_commands

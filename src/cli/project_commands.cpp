@@ -14,7 +14,7 @@
 #include "app/projects.hpp"
 #include "cli/command_registry.hpp"
 
-namespace sd::cli {
+namespace sd::cli::project_commands {
 namespace {
 
 /// What a user of a cluster project does next.
@@ -165,4 +165,4 @@ CommandRegistrar registrar{20, [](CLI::App& app, Context&) {
 }};
 
 }  // namespace
-}  // namespace sd::cli
+}  // namespace sd::cli::project_commands

@@ -20,7 +20,7 @@
 #include "cli/slurm_flags.hpp"
 #include "control/config_string.hpp"
 
-namespace sd::cli {
+namespace sd::cli::run_design_commands {
 namespace {
 
 struct RunDesignOptions {
@@ -137,4 +137,4 @@ CommandRegistrar registrar{40, [](CLI::App& app, Context& context) {
 }};
 
 }  // namespace
-}  // namespace sd::cli
+}  // namespace sd::cli::run_design_commands

@@ -17,7 +17,7 @@
 #include "cli/export_display.hpp"
 #include "control/config_string.hpp"
 
-namespace sd::cli {
+namespace sd::cli::status_commands {
 namespace {
 
 struct StatusOptions {
@@ -141,4 +141,4 @@ CommandRegistrar registrar{41, [](CLI::App& app, Context&) {
 }};
 
 }  // namespace
-}  // namespace sd::cli
+}  // namespace sd::cli::status_commands

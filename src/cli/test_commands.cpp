@@ -18,7 +18,7 @@
 #include "cli/score_output.hpp"
 #include "control/config_string.hpp"
 
-namespace sd::cli {
+namespace sd::cli::test_commands {
 namespace {
 
 using nlohmann::json;
@@ -150,4 +150,4 @@ CommandRegistrar registrar{41, [](CLI::App& app, Context& context) {
 }};
 
 }  // namespace
-}  // namespace sd::cli
+}  // namespace sd::cli::test_commands

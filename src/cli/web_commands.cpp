@@ -15,7 +15,7 @@
 #include "core/home.hpp"
 #include "web/web_server.hpp"
 
-namespace sd::cli {
+namespace sd::cli::web_commands {
 namespace {
 
 struct WebOptions {
@@ -88,4 +88,4 @@ const CommandRegistrar registrar{60, [](CLI::App& app, Context&) {
 }};
 
 }  // namespace
-}  // namespace sd::cli
+}  // namespace sd::cli::web_commands

@@ -16,7 +16,7 @@
 #include "missions/catalogue.hpp"
 #include "storage/validation.hpp"
 
-namespace sd::cli {
+namespace sd::cli::workflow_commands {
 namespace {
 
 using MissionEntry = sd::MissionSummary;
@@ -90,4 +90,4 @@ CommandRegistrar registrar{30, [](CLI::App& app, Context&) {
 }};
 
 }  // namespace
-}  // namespace sd::cli
+}  // namespace sd::cli::workflow_commands
