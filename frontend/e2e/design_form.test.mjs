@@ -59,6 +59,14 @@ test('the form offers the presets, every flavour with what it brings, and the mi
   assert.equal(await page.inputValue('#design-preset'), 'custom');
   await page.uncheck('[data-testid="flavour-coconut"]');
   assert.equal(await page.inputValue('#design-preset'), 'chocolate');
+  // The methods, each with its line; the minimum follows the chosen one. Back to automode.
+  const methods = await page.$$eval('#design-method option', (os) => os.map((o) => o.value));
+  assert.deepEqual(methods, ['automode', 'random-search', 'local-search']);
+  await page.selectOption('#design-method', 'local-search');
+  await page.waitForFunction(() => /local-search's minimum/.test(document.getElementById('design-minimum').textContent));
+  assert.match(await page.textContent('#design-method-summary'), /local search/);
+  await page.selectOption('#design-method', 'automode');
+  await page.waitForFunction(() => /automode's minimum/.test(document.getElementById('design-minimum').textContent));
   budget = minimum + 100;
   await page.fill('#design-seed', '7');
   await page.fill('#design-budget', String(budget));

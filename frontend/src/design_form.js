@@ -1,6 +1,7 @@
 // The start-a-design form of the Designs tab: the same choices as `run-design` (--fsm / --bt,
-// flavour flags, a seed) plus the project's budget, with the thesis' presets and the least
-// budget Iterated F-Race accepts for the chosen space (GET /api/design-space).
+// flavour flags, --method, a seed) plus the project's budget, with the thesis' presets and the
+// least budget the chosen method accepts for the chosen space (GET /api/design-space, which
+// also lists the methods).
 import { api } from './api.js';
 import { el } from './properties.js';
 
@@ -37,18 +38,22 @@ export function initDesignForm(catalogue) {
   $('design-preset').replaceChildren(...PRESETS.map((p) => el('option', { value: p.id, text: p.label })));
 
   const architecture = () => (document.querySelector('input[name="design-arch"]:checked') || {}).value || 'fsm,bt';
+  const method = () => $('design-method').value || 'automode';
+  let methods = [];
   const flavours = () => [...document.querySelectorAll('#design-flavours input:checked')].map((i) => i.value);
   let minimum = null;
   let serial = 0;
 
   async function refreshMinimum() {
     const mine = ++serial;
-    const query = `architectures=${encodeURIComponent(architecture())}&flavours=${encodeURIComponent(flavours().join(','))}`;
+    const query = `architectures=${encodeURIComponent(architecture())}&flavours=${encodeURIComponent(flavours().join(','))}` +
+      `&method=${encodeURIComponent(method())}`;
     try {
       const space = await api(`/api/design-space?${query}`, { quiet: true });
       if (mine !== serial) return;
+      if (methods.length === 0) showMethods(space.methods);
       minimum = space.minimum_budget;
-      $('design-minimum').textContent = `at least ${minimum} runs for this space (Iterated F-Race's minimum)`;
+      $('design-minimum').textContent = `at least ${minimum} runs for this space (${space.method}'s minimum)`;
       $('design-notes').textContent = space.notes.join(' ');
     } catch (e) {
       if (mine !== serial) return;
@@ -57,6 +62,20 @@ export function initDesignForm(catalogue) {
       $('design-notes').textContent = e.message;
     }
     checkBudget();
+  }
+
+  /// The methods the server offers, with the chosen one's line beside the list.
+  function showMethods(list) {
+    methods = list;
+    const chosen = method();
+    $('design-method').replaceChildren(...list.map((m) => el('option', { value: m.name, text: `${m.name}: ${m.title}` })));
+    $('design-method').value = list.some((m) => m.name === chosen) ? chosen : 'automode';
+    showSummary();
+  }
+
+  function showSummary() {
+    const found = methods.find((m) => m.name === method());
+    $('design-method-summary').textContent = found ? found.summary : '';
   }
 
   function checkBudget() {
@@ -82,6 +101,7 @@ export function initDesignForm(catalogue) {
   $('design-preset').addEventListener('change', () => applyPreset($('design-preset').value));
   $('design-form').addEventListener('change', (e) => {
     if (e.target.id === 'design-preset') return;
+    if (e.target.id === 'design-method') { showSummary(); refreshMinimum(); return; }
     if (e.target.id !== 'design-budget' && e.target.id !== 'design-seed') { matchPreset(); refreshMinimum(); }
     checkBudget();
   });
@@ -93,6 +113,7 @@ export function initDesignForm(catalogue) {
     /// The body of POST /api/projects/NAME/designs.
     request() {
       const body = { architectures: architecture(), flavours: flavours().join(',') };
+      if (method() !== 'automode') body.method = method();  // as run-design without --method
       const seed = $('design-seed').value.trim();
       if (seed !== '') body.seed = seed;  // as typed: a 64-bit seed would lose digits as a JS number
       return body;

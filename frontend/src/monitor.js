@@ -70,7 +70,8 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
 
   /// What a design was started with, as `status` prints it.
   // A mission file is shown as project/file (the whole path is the design's title, on hover).
-  const startedWith = (d) => `${d.architectures} · ${d.flavours} · seed ${d.seed} · budget ${d.budget} · ${shortName({ name: d.mission || '' })}`;
+  const startedWith = (d) => `${d.architectures} · ${d.flavours}${d.method && d.method !== 'automode' ? ` · ${d.method}` : ''}` +
+    ` · seed ${d.seed} · budget ${d.budget} · ${shortName({ name: d.mission || '' })}`;
 
   /// The list reads its rows from /designs; the newest row's state is the status box's (both come
   /// from the same storage reading, and the list is fetched again whenever they would differ).

@@ -54,7 +54,7 @@ __all__ = [
     "AccessDeniedError", "Account", "Assessment", "assess", "ConfigError", "ConflictError", "ControlSoftware", "Design",
     "DesignFolderError", "DesignResult", "ExperimentReport", "ExportError", "FLAVOURS",
     "InvalidRequestError", "MAX_SEEDS", "MAX_SEED_BOUND", "MAX_THREADS", "Mission", "MissionError", "NotFoundError",
-    "SwarmDesignError", "Trace", "design", "evaluate", "missions", "module_catalogue", "pseudo_realities",
+    "SwarmDesignError", "Trace", "design", "design_methods", "evaluate", "missions", "module_catalogue", "pseudo_realities",
     "pseudo_reality_samples",
     "resume_design", "trace",
 ]
@@ -88,6 +88,12 @@ def missions() -> list[dict[str, Any]]:
     """The mission catalogue, as ``swarmdesign missions --json`` lists it: one dict per mission
     (name, title, origin, robots, duration_s, direction, source)."""
     return _core.missions()
+
+
+def design_methods() -> list[dict[str, Any]]:
+    """The design methods, one dict each (name, title, summary, has_design_space); those with a
+    design space are what design(method=...) and ``swarmdesign design --method`` take."""
+    return _core.design_methods()
 
 
 def module_catalogue() -> dict[str, Any]:
@@ -322,8 +328,11 @@ def design(mission: MissionLike, budget: Union[int, str], *, architectures: Unio
            folder: Union[None, str, "os.PathLike[str]"] = None, threads: int = 0,
            progress: Optional[Callable[[dict[str, Any]], Any]] = None,
            pseudo_reality: Union[None, str, "os.PathLike[str]"] = None,
-           pseudo_reality_samples: Optional[str] = None) -> DesignResult:
-    """Designs control software with Iterated F-Race, as ``swarmdesign design`` does, in-process.
+           pseudo_reality_samples: Optional[str] = None, method: str = "automode") -> DesignResult:
+    """Designs control software, as ``swarmdesign design`` does, in-process.
+
+    method: the optimiser over the design space (design_methods(): "automode", Iterated F-Race;
+    "random-search"; "local-search").
 
     architectures: "fsm", "bt" or both (None: all); flavours: any of FLAVOURS (None: all);
     seed: the design's seed (None: a random one, in the report); same seed, same result, on any
@@ -340,7 +349,7 @@ def design(mission: MissionLike, budget: Union[int, str], *, architectures: Unio
                           _names(flavours, "flavours"), seed_value, "" if folder is None else os.fspath(folder),
                           _threads(threads), _callback(progress),
                           "" if pseudo_reality is None else os.fspath(pseudo_reality),
-                          "" if pseudo_reality_samples is None else str(pseudo_reality_samples))
+                          "" if pseudo_reality_samples is None else str(pseudo_reality_samples), str(method))
     return DesignResult(report)
 
 

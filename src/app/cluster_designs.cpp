@@ -44,7 +44,7 @@ std::string job_body(const std::string& folder, const storage::Design& d, const 
          "  set -- design --resume \"$PWD/design\"\n"
          "else\n"
          "  set -- design --mission \"$PWD/mission.json\" --budget " + std::to_string(d.budget) +
-         " --seed " + std::to_string(d.seed) + space_flags(d.architectures, d.flavours) +
+         " --seed " + std::to_string(d.seed) + space_flags(d.architectures, d.flavours) + method_flag(d.method) +
          " --out \"$PWD/design\"\n"
          "fi\n" +
          design_command_line(binary, request);
@@ -186,10 +186,11 @@ ClusterSubmission submit_cluster_design(Home& home, const storage::User& user, c
     const std::uint64_t seed = request.seed ? *request.seed : random_seed();
     if (!project.mission) throw NotFound("project " + project.name + " has no mission; choose one with: swarmdesign set-mission");
     if (!project.budget) throw NotFound("project " + project.name + " has no budget; set one with: swarmdesign set-budget N");
-    const PreparedDesign checked = check_new_design({*project.mission, *project.budget, request.space, seed, FileScope::local(), {}, {}, {}});
+    const PreparedDesign checked = check_new_design(
+        {*project.mission, *project.budget, request.space, seed, FileScope::local(), {}, {}, {}, request.method});
     if (latest && latest->state == storage::DesignState::interrupted && request.fresh) designs.abandon(latest->id);
     out.design = designs.start({checked.choice.architectures_text(), checked.choice.flavours_text(), seed,
-                                storage::owner_text(storage::slurm_submitting())});
+                                storage::owner_text(storage::slurm_submitting()), std::string(request.method->name)});
     submitting([&] {
       // Recorded before the cluster is asked anything, so that a failure has a row to note it
       // in and run-design can submit this design again.

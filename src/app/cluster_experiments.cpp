@@ -123,7 +123,8 @@ ClusterExperimentSubmission submit_cluster_experiment(Home& home, const storage:
       if (fresh) cluster::write_file(shell, folder + "/" + it->second, load_mission(d.plan.mission).document);
       store.set_stage(d.id, storage::DesignStage::designing);
       lines += design_folder_name(d.id) + " " + it->second + " " + std::to_string(d.plan.budget) + " " +
-               std::to_string(d.plan.seed) + space_flags(d.plan.architectures, d.plan.flavours) + "\n";
+               std::to_string(d.plan.seed) + space_flags(d.plan.architectures, d.plan.flavours) + method_flag(d.plan.method) +
+               "\n";
     }
     cluster::write_file(shell, folder + "/tasks.txt", lines);
     const auto settings = job_settings(given, "sd-" + out.project.name + "-" + out.experiment.name, folder, "slurm-%A_%a.out");

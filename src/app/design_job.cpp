@@ -9,6 +9,7 @@
 #include "app/resume_check.hpp"
 #include "app/simulation_runner.hpp"
 #include "control/config_string.hpp"
+#include "design/method_options.hpp"
 #include "design/race_log.hpp"
 #include "evaluation/results_version.hpp"
 #include "missions/catalogue.hpp"
@@ -26,6 +27,13 @@ design::IraceOptions engine_options(long long budget, std::uint64_t seed, std::s
   // instances are its pseudo-reality samples.
   o.n_instances = instances;
   return o;
+}
+
+/// The method's optimiser settings for a prepared design (its space and instances set).
+design::IraceOptions design_options(const PreparedDesign& d, long long budget, std::uint64_t seed) {
+  const std::size_t instances = std::max<std::size_t>(1, d.instance_models.size());
+  if (d.method == &design::kAutoMoDe) return engine_options(budget, seed, instances);
+  return design::method_options(*d.method, budget, seed, instances, *d.space);
 }
 
 /// The pseudo-realities of a robust design: the models its instances run in.
@@ -53,12 +61,32 @@ long long minimum_design_budget(const design::ParameterSpace& space, int nb_iter
   return design::minimum_budget(engine_options(1, 0), n, nb_iterations > 0 ? nb_iterations : n);
 }
 
+long long minimum_design_budget(const design::MethodInfo& method, const design::ParameterSpace& space) {
+  return &method == &design::kAutoMoDe ? minimum_design_budget(space) : design::method_minimum_budget(method, space);
+}
+
 void require_minimum_budget(long long budget, const design::ParameterSpace& space, int nb_iterations) {
   const long long minimum = minimum_design_budget(space, nb_iterations);
   if (budget < minimum)
     throw InvalidRequest("a budget of " + std::to_string(budget) + " simulation runs is below the minimum of " +
                          std::to_string(minimum) + " that Iterated F-Race needs for this design space" +
                          (nb_iterations > 0 ? " with " + std::to_string(nb_iterations) + " iterations" : ""));
+}
+
+const design::MethodInfo& search_method(std::string_view name) {
+  const design::MethodInfo* method = design::find_method(name);
+  if (!method || !method->has_design_space)
+    throw InvalidRequest("unknown design method '" + std::string(name) + "' (" + search_method_names() + ")");
+  return *method;
+}
+
+std::string search_method_names() {
+  std::vector<std::string_view> names;
+  for (const design::MethodInfo* m : design::kMethods)
+    if (m->has_design_space) names.push_back(m->name);
+  std::string text;
+  for (std::size_t i = 0; i < names.size(); ++i) text += std::string(i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + std::string(names[i]);
+  return text;
 }
 
 design::DesignSpaceChoice resolve_space(const design::DesignSpaceRequest& request) {
@@ -75,14 +103,20 @@ PreparedDesign check_new_design(const NewDesignSettings& settings) {
   d.mission_reference = mission_reference(settings.mission);
   d.choice = resolve_space(settings.space);
   d.space = std::make_unique<design::ParameterSpace>(design::build_design_space(d.choice));
-  require_minimum_budget(settings.budget, *d.space);
+  d.method = settings.method;
+  if (d.method == &design::kAutoMoDe) {
+    require_minimum_budget(settings.budget, *d.space);
+  } else if (const long long minimum = minimum_design_budget(*d.method, *d.space); settings.budget < minimum) {
+    throw InvalidRequest("a budget of " + std::to_string(settings.budget) + " simulation runs is below the minimum of " +
+                         std::to_string(minimum) + " that " + std::string(d.method->name) + " needs for this design space");
+  }
   if (!settings.pseudo_reality.empty())
     use_pseudo_realities(d,
                          settings.pseudo_reality_document.empty()
                              ? load_requested_pseudo_reality(settings.pseudo_reality, settings.files)
                              : pseudo_reality_from_document(settings.pseudo_reality, settings.pseudo_reality_document),
                          settings.pseudo_reality_samples);
-  d.options = engine_options(settings.budget, settings.seed, std::max<std::size_t>(1, d.instance_models.size()));
+  d.options = design_options(d, settings.budget, settings.seed);
   return d;
 }
 
@@ -100,6 +134,7 @@ std::string settings_text(const PreparedDesign& d) {
   std::string text = "mission " + d.mission_reference + ", budget " + std::to_string(d.options.max_experiments) + ", seed " +
                      std::to_string(d.options.seed) + ", " + d.choice.architectures_text() + " / " + d.choice.flavours_text();
   if (d.reality) text += ", pseudo-reality " + d.reality->reference + " samples " + d.reality_samples;
+  if (d.method != &design::kAutoMoDe) text += ", method " + std::string(d.method->name);
   return text;
 }
 }  // namespace
@@ -143,7 +178,10 @@ PreparedDesign prepare_resume(const std::filesystem::path& folder, bool allow_fi
       throw DesignFolderError("the design in " + d.folder.string() + " has pseudo-realities this swarmdesign cannot read: " + e.what());
     }
   }
-  d.options = engine_options(meta.budget, meta.seed, std::max<std::size_t>(1, d.instance_models.size()));
+  d.method = design::find_method(meta.method);
+  if (!d.method || !d.method->has_design_space)
+    throw DesignFolderError("the design in " + d.folder.string() + " was made by a design method this swarmdesign lacks: " + meta.method);
+  d.options = design_options(d, meta.budget, meta.seed);
   if (design::fingerprint(*d.space, d.options) != meta.fingerprint)
     throw DesignFolderError("the design in " + d.folder.string() +
                             " was made with another design space or other optimiser settings than this swarmdesign has; "
@@ -163,7 +201,7 @@ DesignOutcome run_design(PreparedDesign& d, const DesignRunOptions& options) {
     storage::DesignMeta meta{d.mission_reference, std::string(direction_name(d.mission.objective.direction)),
                              d.options.max_experiments, d.choice.architectures_text(), d.choice.flavours_text(),
                              d.options.seed, design::fingerprint(*d.space, d.options), d.mission.digest, kResultsVersion,
-                             {}, {}, {}};
+                             {}, {}, {}, std::string(d.method->name)};
     if (d.reality) {
       meta.pseudo_reality = d.reality->reference;
       meta.pseudo_reality_document = d.reality->document;
@@ -223,6 +261,7 @@ DesignOutcome run_design(PreparedDesign& d, const DesignRunOptions& options) {
   r.folder = d.folder;
   r.mission = d.mission.name;
   r.direction = std::string(direction_name(d.mission.objective.direction));
+  r.method = std::string(d.method->name);
   r.budget = d.options.max_experiments;
   r.seed = d.options.seed;
   r.architectures = d.choice.architectures_text();

@@ -24,6 +24,7 @@
 #include "control/control_software.hpp"
 #include "design/design_space.hpp"
 #include "design/iterated_race.hpp"
+#include "design/methods.hpp"
 #include "evaluation/evaluator.hpp"
 #include "missions/mission.hpp"
 
@@ -46,6 +47,8 @@ struct NewDesignSettings {
   std::string pseudo_reality{};
   std::string pseudo_reality_samples = std::string(kDefaultDesignSamples);
   std::string pseudo_reality_document{};  // its text when already read (a design resumed); else loaded
+  /// The optimiser over the space (design/methods.hpp: automode, random-search, local-search).
+  const design::MethodInfo* method = &design::kAutoMoDe;
 };
 
 struct PreparedDesign {
@@ -53,6 +56,7 @@ struct PreparedDesign {
   Mission mission;
   std::string mission_reference;  // as stored: catalogue name or absolute path
   design::DesignSpaceChoice choice;
+  const design::MethodInfo* method = &design::kAutoMoDe;
   std::unique_ptr<design::ParameterSpace> space;  // IteratedRace keeps a reference to it
   design::IraceOptions options;
   std::optional<design::DesignState> restored;    // set when resuming from a checkpoint
@@ -93,6 +97,7 @@ struct EliteReport {
 struct DesignReport {
   std::filesystem::path folder;
   std::string mission, direction;
+  std::string method;  // design/methods.hpp
   long long budget = 0;
   std::uint64_t seed = 0;
   std::string architectures, flavours;
@@ -137,9 +142,16 @@ DesignOutcome run_design(PreparedDesign& design, const DesignRunOptions& options
 /// The smallest budget the engine accepts for this space (irace's minimum). nb_iterations 0
 /// means the default floor(2 + log2 N_param), as both the engine and irace pick it.
 long long minimum_design_budget(const design::ParameterSpace& space, int nb_iterations = 0);
+/// The smallest budget `method` accepts for this space.
+long long minimum_design_budget(const design::MethodInfo& method, const design::ParameterSpace& space);
 /// InvalidRequest naming the minimum when `budget` is below it: `design`, `run-design` and
 /// `irace-export` refuse a too small budget with the same words.
 void require_minimum_budget(long long budget, const design::ParameterSpace& space, int nb_iterations = 0);
+/// The design method of that name with a modular design space (automode, random-search,
+/// local-search); InvalidRequest naming them for any other.
+const design::MethodInfo& search_method(std::string_view name);
+/// "automode, random-search or local-search", for help texts.
+std::string search_method_names();
 /// The design space of the flags; InvalidRequest for a flavour without modules.
 design::DesignSpaceChoice resolve_space(const design::DesignSpaceRequest& request);
 

@@ -81,6 +81,10 @@ class DesignMethod {
 /// The method of that name (design/methods.hpp); InvalidRequest for a name it does not have.
 const DesignMethod& design_method(std::string_view name);
 
+/// Every design method, one line each, as the front ends list them: [{"name", "title",
+/// "summary", "has_design_space"}] ("has_design_space": --method of `design` takes it).
+nlohmann::json design_methods_document();
+
 /// What a design folder holds, whichever method made it (Python's Design.open reads it):
 /// {"folder", "method", and "progress", "race_log", "convergence" for Iterated F-Race, or
 /// "document", "convergence" for EvoStick}. A damaged or foreign folder: DesignFolderError.

@@ -9,14 +9,24 @@
 
 namespace sd::app {
 
-const DesignMethod& automode_method();  // method_automode.cpp
-const DesignMethod& evostick_method();  // method_evostick.cpp
+const DesignMethod& automode_method();       // method_automode.cpp, as the next two
+const DesignMethod& random_search_method();
+const DesignMethod& local_search_method();
+const DesignMethod& evostick_method();       // method_evostick.cpp
 
 const DesignMethod& design_method(std::string_view name) {
-  static const DesignMethod* const kRegistry[] = {&automode_method(), &evostick_method()};
+  static const DesignMethod* const kRegistry[] = {&automode_method(), &random_search_method(), &local_search_method(),
+                                                  &evostick_method()};
   for (const DesignMethod* method : kRegistry)
     if (method->info().name == name) return *method;
   throw InvalidRequest("unknown design method '" + std::string(name) + "' (" + design::method_names_text() + ")");
+}
+
+nlohmann::json design_methods_document() {
+  nlohmann::json out = nlohmann::json::array();
+  for (const design::MethodInfo* m : design::kMethods)
+    out.push_back({{"name", m->name}, {"title", m->title}, {"summary", m->summary}, {"has_design_space", m->has_design_space}});
+  return out;
 }
 
 nlohmann::json design_folder_document(const std::filesystem::path& folder) {
@@ -28,7 +38,7 @@ nlohmann::json design_folder_document(const std::filesystem::path& folder) {
     out["convergence"] = convergence_document(method.convergence(folder));
     return out;
   }
-  out["method"] = std::string(design::kAutoMoDe.name);
+  out["method"] = storage::DesignStore::open(folder).meta().method;  // automode, random-search or local-search
   out["progress"] = stored_progress_document(storage::read_design_progress(folder));
   out["race_log"] = race_log_document(storage::read_race_log(folder));
   out["convergence"] = convergence_document(storage::read_convergence(folder));

@@ -16,8 +16,10 @@ design::DesignSpaceRequest design_space_request(const std::string& architectures
 design::DesignSpaceRequest design_space_request(const std::vector<std::string>& architectures,
                                                 const std::vector<std::string>& flavours);
 
-/// What the space holds: {"architectures", "flavours", "notes", "minimum_budget"} (the web's
-/// design form shows it as the user chooses).
-nlohmann::json design_space_document(const std::string& architectures, const std::string& flavours);
+/// What the space holds: {"architectures", "flavours", "notes", "method", "minimum_budget" (the
+/// method's, over this space), "methods" (those that search a design space, one line each)} (the
+/// web's design form shows it as the user chooses). An empty method: automode.
+nlohmann::json design_space_document(const std::string& architectures, const std::string& flavours,
+                                     const std::string& method = "");
 
 }  // namespace sd::app

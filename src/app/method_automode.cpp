@@ -15,10 +15,11 @@ namespace sd::app {
 
 namespace {
 
-/// The space of a condition and the smallest budget the optimiser accepts for it.
-std::pair<design::DesignSpaceChoice, long long> condition_space(const experiments::Condition& c) {
+/// The space of a condition and the smallest budget its method accepts for it.
+std::pair<design::DesignSpaceChoice, long long> condition_space(const experiments::Condition& c,
+                                                                const design::MethodInfo& method) {
   const auto choice = resolve_space(design::request_from_names(c.architectures, c.flavours));
-  return {choice, minimum_design_budget(design::build_design_space(choice))};
+  return {choice, minimum_design_budget(method, design::build_design_space(choice))};
 }
 
 /// Shows a design's race steps to the method's observer in the mission's units.
@@ -38,12 +39,15 @@ class RaceWatcher final : public DesignObserver {
   MethodObserver* observer_;
 };
 
+/// AutoMoDe's design space and design job, raced by the optimiser of `info` (automode's
+/// Iterated F-Race, random search or local search: design/method_options.hpp).
 class AutoMoDe final : public DesignMethod {
  public:
-  const design::MethodInfo& info() const override { return design::kAutoMoDe; }
+  explicit AutoMoDe(const design::MethodInfo& info) : info_(info) {}
+  const design::MethodInfo& info() const override { return info_; }
 
   std::optional<std::string> plan(storage::PlannedDesign& d, const experiments::Condition& c) const override {
-    const auto [choice, minimum] = condition_space(c);
+    const auto [choice, minimum] = condition_space(c, info_);
     d.architectures = choice.architectures_text();
     d.flavours = choice.flavours_text();
     if (d.budget >= minimum) return std::nullopt;
@@ -54,7 +58,7 @@ class AutoMoDe final : public DesignMethod {
   }
 
   std::vector<ControlSoftware> samples(const experiments::Condition& c, Rng& rng) const override {
-    const auto space = design::build_design_space(condition_space(c).first);
+    const auto space = design::build_design_space(condition_space(c, info_).first);
     std::vector<ControlSoftware> out;
     out.reserve(4);
     for (int i = 0; i < 4; ++i) out.push_back(parse_control_software(space.render(design::sample_uniform(space, rng))));
@@ -67,7 +71,7 @@ class AutoMoDe final : public DesignMethod {
         std::filesystem::exists(storage::DesignStore::file_in(folder))
             ? prepare_resume(folder, true)
             : prepare_new_design({d.mission, d.budget, design::request_from_text(d.architectures, d.flavours), d.seed,
-                                  FileScope::local(), {}, std::string(kDefaultDesignSamples), {}},
+                                  FileScope::local(), {}, std::string(kDefaultDesignSamples), {}, &info_},
                                  folder);
     RaceWatcher watcher(prepared.mission.objective.direction == Direction::Maximize, options.observer);
     const DesignOutcome outcome = run_design(
@@ -87,12 +91,25 @@ class AutoMoDe final : public DesignMethod {
 
   std::string describe(const storage::PlannedDesign& d) const override { return d.architectures + " / " + d.flavours; }
   bool runs_on_cluster() const override { return true; }
+
+ private:
+  const design::MethodInfo& info_;
 };
 
 }  // namespace
 
 const DesignMethod& automode_method() {
-  static const AutoMoDe method;
+  static const AutoMoDe method(design::kAutoMoDe);
+  return method;
+}
+
+const DesignMethod& random_search_method() {
+  static const AutoMoDe method(design::kRandomSearch);
+  return method;
+}
+
+const DesignMethod& local_search_method() {
+  static const AutoMoDe method(design::kLocalSearch);
   return method;
 }
 

@@ -33,7 +33,7 @@ namespace {
 bool repeats(const storage::Design& finished, const PreparedDesign& prepared, std::uint64_t seed, std::int64_t budget) {
   if (finished.state != storage::DesignState::finished || finished.seed != seed || finished.budget != budget ||
       finished.mission != prepared.mission_reference || finished.architectures != prepared.choice.architectures_text() ||
-      finished.flavours != prepared.choice.flavours_text())
+      finished.flavours != prepared.choice.flavours_text() || finished.method != prepared.method->name)
     return false;
   try {  // the same mission file may have been edited since, or the build may score otherwise
     const storage::DesignMeta meta = storage::DesignStore::open(finished.folder).meta();
@@ -61,7 +61,7 @@ void remember_pseudo_reality(const PreparedDesign& d) {
 
 NewDesignSettings interrupted_settings(const storage::Design& latest, const FileScope& files) {
   NewDesignSettings settings{latest.mission, latest.budget, design::request_from_text(latest.architectures, latest.flavours),
-                             latest.seed, files, {}, std::string(kDefaultDesignSamples), {}};
+                             latest.seed, files, {}, std::string(kDefaultDesignSamples), {}, &search_method(latest.method)};
   const std::filesystem::path remembered = latest.folder / kPseudoRealityFile;
   if (!std::filesystem::exists(remembered)) return settings;
   const nlohmann::json doc = nlohmann::json::parse(read_bounded_file(remembered, "pseudo-reality file").text);
@@ -112,7 +112,7 @@ ProjectDesign start_project_design(Home& home, const storage::User& user, const 
   std::optional<PreparedDesign> checked;
   if (project.mission && project.budget)  // else Designs::start says what is missing
     checked = check_new_design({*project.mission, *project.budget, request.space, seed, request.files,
-                                request.pseudo_reality, request.pseudo_reality_samples, {}});
+                                request.pseudo_reality, request.pseudo_reality_samples, {}, request.method});
   if (checked && latest && request.seed && !request.fresh && repeats(*latest, *checked, seed, *project.budget))
     throw AlreadyFinished(*latest, project.name);
   const design::DesignSpaceChoice choice = checked ? checked->choice : resolve_space(request.space);
@@ -121,7 +121,8 @@ ProjectDesign start_project_design(Home& home, const storage::User& user, const 
     designs.abandon(latest->id);
     abandoned = latest;
   }
-  storage::Design design = designs.start({choice.architectures_text(), choice.flavours_text(), seed, request.owner});
+  storage::Design design =
+      designs.start({choice.architectures_text(), choice.flavours_text(), seed, request.owner, std::string(request.method->name)});
   if (!checked) throw std::logic_error("a design started without a mission or budget");
   PreparedDesign prepared = std::move(*checked);
   prepared.folder = design.folder;

@@ -32,6 +32,7 @@ struct ProjectDesignRequest {
   FileScope files = FileScope::local(); // where its mission file may be (a server: the user's projects)
   std::string pseudo_reality{};         // a robust design's specification (NewDesignSettings)
   std::string pseudo_reality_samples = std::string(kDefaultDesignSamples);
+  const design::MethodInfo* method = &design::kAutoMoDe;  // the optimiser (NewDesignSettings)
 };
 
 struct ProjectDesign {

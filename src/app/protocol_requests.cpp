@@ -68,7 +68,7 @@ experiments::Protocol requested_protocol(const ProtocolRequest& r, const FileSco
   const int given = (r.builtin.empty() ? 0 : 1) + (r.file.empty() ? 0 : 1) + (r.text.empty() ? 0 : 1);
   if (given > 1) throw InvalidRequest("name a built-in experiment or give a protocol (--file, text), not both");
   if (given == 0)
-    throw InvalidRequest("name an experiment (validation, combination, architecture) or give a protocol (--file PROTOCOL)");
+    throw InvalidRequest("name an experiment (validation, combination, architecture, methods) or give a protocol (--file PROTOCOL)");
   if (r.builtin.empty() && r.evostick)
     throw InvalidRequest("--evostick adds a condition to a built-in experiment; write it in the protocol");
   try {

@@ -78,6 +78,8 @@ cluster::JobSettings job_settings(const ClusterJobRequest& r, const std::string&
   return settings;
 }
 
+std::string method_flag(const std::string& method) { return method == "automode" ? "" : " --method " + method; }
+
 std::string space_flags(const std::string& architectures, const std::string& flavours) {
   std::string out;
   for (const auto& list : {architectures, flavours})

@@ -43,6 +43,8 @@ cluster::JobSettings job_settings(const ClusterJobRequest& request, const std::s
                                   const std::string& folder, const std::string& output);
 /// " --fsm --chocolate": a design space's flags from its stored lists.
 std::string space_flags(const std::string& architectures, const std::string& flavours);
+/// " --method NAME" for a method other than AutoMoDe's Iterated F-Race; "" for it.
+std::string method_flag(const std::string& method);
 /// The job script's last line: the design command in "$@" run by `binary` (under mpirun when
 /// on ranks), each task on the CPUs Slurm gave it; result.json appears only when it ends.
 std::string design_command_line(const std::string& binary, const ClusterJobRequest& request);

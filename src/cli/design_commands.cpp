@@ -22,7 +22,7 @@ namespace sd::cli::design_commands {
 namespace {
 
 struct DesignOptions {
-  std::string mission, budget, seed, out, resume;
+  std::string mission, budget, seed, out, resume, method;
   unsigned threads = 0;
   bool json = false;
   DesignSpaceFlags flags;
@@ -32,7 +32,8 @@ struct DesignOptions {
 void run_design_command(const DesignOptions& o) {
   app::PreparedDesign prepared;
   if (!o.resume.empty()) {
-    if (!o.mission.empty() || !o.budget.empty() || !o.seed.empty() || !o.out.empty() || o.flags.any() || o.robust.any())
+    if (!o.mission.empty() || !o.budget.empty() || !o.seed.empty() || !o.out.empty() || !o.method.empty() || o.flags.any() ||
+        o.robust.any())
       throw UsageError("--resume continues a design with the settings it was started with; give only --threads or --json with it");
     prepared = app::prepare_resume(o.resume, true);  // a finished one: its result, as run-design gives it
   } else {
@@ -42,6 +43,7 @@ void run_design_command(const DesignOptions& o) {
     settings.mission = o.mission;
     settings.budget = app::parse_budget(o.budget);
     settings.space = o.flags.request();
+    if (!o.method.empty()) settings.method = &app::search_method(o.method);
     settings.seed = o.seed.empty() ? app::random_seed() : app::parse_seed(o.seed);
     if (o.robust.samples.size() && o.robust.pseudo_realities.empty())
       throw UsageError("--pseudo-reality-samples needs --pseudo-reality SPEC");
@@ -53,7 +55,9 @@ void run_design_command(const DesignOptions& o) {
   if (!o.json)
     std::cout << (app::already_finished(prepared) ? "The design in " + prepared.folder.string() + " has already finished"
                   : (prepared.resuming ? "Resuming the design in " : "Designing in ") + prepared.folder.string())
-              << " (mission " << prepared.mission.name << ", budget " << prepared.options.max_experiments
+              << " (mission " << prepared.mission.name
+              << (prepared.method != &design::kAutoMoDe ? ", method " + std::string(prepared.method->name) : "")
+              << ", budget " << prepared.options.max_experiments
               << ", seed " << prepared.options.seed
               << (prepared.reality ? ", robust: pseudo-realities " + prepared.reality->reference + " samples " + prepared.reality_samples : "")
               << ")\n"
@@ -65,11 +69,20 @@ void run_design_command(const DesignOptions& o) {
   else print_design_report(*outcome.report);
 }
 
+/// One line per method with a design space, for the help text.
+std::string method_lines() {
+  std::string text = "Methods (--method):\n";
+  for (const design::MethodInfo* m : design::kMethods)
+    if (m->has_design_space) text += "  " + std::string(m->name) + std::string(15 - m->name.size(), ' ') + std::string(m->summary) + "\n";
+  return text;
+}
+
 void register_design(CLI::App& app) {
-  auto* cmd = app.add_subcommand("design", "Design control software for a mission with Iterated F-Race");
+  auto* cmd = app.add_subcommand("design", "Design control software for a mission (Iterated F-Race unless --method says)");
   auto o = std::make_shared<DesignOptions>();
   cmd->add_option("--mission", o->mission, "Mission name or mission file");
   cmd->add_option("--budget", o->budget, "Design budget: the number of simulation runs the optimiser may use");
+  cmd->add_option("--method", o->method, "Optimiser over the design space: " + app::search_method_names() + " (default automode)");
   add_design_space_flags(*cmd, o->flags);
   add_robust_design_flags(*cmd, o->robust);
   cmd->add_option("--seed", o->seed, "Seed of the design (default: a random one, printed); same seed, same result");
@@ -82,7 +95,8 @@ void register_design(CLI::App& app) {
       "Architecture flags: --fsm, --bt (none = all that exist). Flavour flags: --chocolate, --tuttifrutti,\n"
       "--coconut, --maple, --arlequin (none = all that exist). The design keeps its whole state in\n"
       "DIR/design.db after every race step, so a killed design continues with --resume DIR and ends\n"
-      "exactly as if it had never stopped.\n\n"
+      "exactly as if it had never stopped.\n\n" +
+      method_lines() + "\n"
       "Example:\n  swarmdesign design --mission aac --budget 20000 --fsm --chocolate --seed 1 --out aac-1\n"
       "  swarmdesign design --resume aac-1\n"
       "  swarmdesign design --mission aac --budget 20000 --fsm --chocolate --pseudo-reality sampled-around --out aac-robust");

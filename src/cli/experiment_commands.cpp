@@ -1,4 +1,4 @@
-// The thesis' three experiments (validation, combination, architecture) and their reports:
+// The thesis' three experiments (validation, combination, architecture), the design methods' (methods) and their reports:
 // `experiment` runs a protocol in the active project (resuming it when it was interrupted),
 // `report` writes its HTML report and CSV files. The jobs are the application layer's (app/experiment_job, app/experiment_report);
 // this file parses, prints and shows progress.
@@ -296,7 +296,7 @@ void collect_command(const CollectOptions& o) {
 CommandRegistrar registrar{45, [](CLI::App& app, Context&) {
   auto o = std::make_shared<ExperimentOptions>();
   auto* cmd = app.add_subcommand("experiment", "Run one of the thesis' experiments (or your own protocol) in the active project");
-  cmd->add_option("name", o->name, "validation | combination | architecture");
+  cmd->add_option("name", o->name, "validation | combination | architecture | methods");
   cmd->add_option("--file", o->file, "Run your own protocol (a JSON file; see src/experiments/README.md)");
   cmd->add_option("--missions", o->missions, "Only these missions, comma-separated (e.g. aac,foraging)");
   o->designs_option = cmd->add_option("--designs", o->designs, "Independent designs per mission and condition (default 10)");
@@ -325,6 +325,8 @@ CommandRegistrar registrar{45, [](CLI::App& app, Context&) {
       "  validation    each flavour alone on its own mission (Maple with behaviour trees)\n"
       "  combination   that, against all five flavours with both architectures\n"
       "  architecture  all five flavours as finite-state machines against behaviour trees, budget 200 000\n"
+      "  methods       the design methods (automode, random-search, local-search) on each mission's own\n"
+      "                flavour and on the combined space, budget 20 000 (--budget-scale 5: 100 000)\n"
       "Designs run one after the other on all cores; every design and assessment is stored in the\n"
       "project as it ends. Killed, the same command resumes it inside the design it was in and ends\n"
       "with the same results. Budgets below the optimiser's minimum are raised to it (with a note).\n"

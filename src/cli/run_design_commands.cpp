@@ -26,7 +26,7 @@ namespace {
 struct RunDesignOptions {
   DesignSpaceFlags flags;
   RobustDesignFlags robust;
-  std::string seed;
+  std::string seed, method;
   unsigned threads = 0;
   bool detach = false;
   bool fresh = false;  // --new: give up an interrupted design instead of resuming it
@@ -48,7 +48,8 @@ void print_started(const app::StartedDesign& s, bool space_given) {
   if (!s.resumed) {
     for (const auto& note : s.notes) std::cerr << "swarmdesign: note: " << note << "\n";
     std::cout << "Design " << d.id << " of " << s.project.name << ": mission " << d.mission << ", budget " << d.budget
-              << ", seed " << d.seed << ", " << d.architectures << " / " << d.flavours << ".\n";
+              << ", seed " << d.seed << ", " << d.architectures << " / " << d.flavours
+              << (d.method == "automode" ? "" : ", method " + d.method) << ".\n";
   }
   if (s.job)
     std::cout << "Submitted to Slurm as job " << s.job->job_id << " on " << s.where << "; its folder there: "
@@ -73,6 +74,10 @@ void run_design(const RunDesignOptions& o, int mpi_ranks) {
   launch.design.pseudo_reality = o.robust.pseudo_realities;
   if (!o.robust.samples.empty()) launch.design.pseudo_reality_samples = o.robust.samples;
   if (!o.seed.empty()) launch.design.seed = app::parse_seed(o.seed);
+  if (!o.method.empty()) {
+    launch.design.method = &app::search_method(o.method);
+    launch.design.space_given = true;
+  }
   launch.design.fresh = o.fresh;
   launch.slurm = o.job;
   launch.detach = o.detach;
@@ -110,6 +115,7 @@ CommandRegistrar registrar{40, [](CLI::App& app, Context& context) {
   add_design_space_flags(*cmd, run->flags);
   add_robust_design_flags(*cmd, run->robust);
   cmd->add_option("--seed", run->seed, "Seed of the design (default: a random one, printed)");
+  cmd->add_option("--method", run->method, "Optimiser over the design space: " + app::search_method_names() + " (default automode)");
   cmd->add_option("--threads", run->threads, "Simulations in parallel (default: all cores)")->check(CLI::NonNegativeNumber);
   cmd->add_flag("--detach", run->detach, "Run in the background, surviving the terminal closing; watch it with status");
   cmd->add_flag("--new", run->fresh,

@@ -11,6 +11,7 @@
 #include "core/fnv.hpp"
 #include "core/math.hpp"
 #include "design/model.hpp"
+#include "design/neighbourhood.hpp"
 #include "design/race.hpp"
 #include "design/sampling.hpp"
 
@@ -123,6 +124,8 @@ std::string fingerprint(const ParameterSpace& space, const IraceOptions& options
                    static_cast<double>(o.sample_instances), static_cast<double>(o.unique_new_configurations)})
     f.add(v);
   for (const auto& c : o.initial_configurations) f.add(space.render(c));
+  // Only another sampler adds to the fingerprint: designs made before it existed resume.
+  if (o.sampler != Sampler::Model) f.add(static_cast<double>(static_cast<int>(o.sampler)));
   return f.hex();
 }
 
@@ -210,8 +213,10 @@ std::vector<int> IteratedRace::sample_new(std::size_t n, const std::vector<int>&
     return true;
   };
   std::vector<SampledConfiguration> fresh;
-  if (uniform) {
+  if (uniform || options_.sampler == Sampler::Uniform) {
     for (auto& c : sample_uniform(space_, n, rng_, acceptable)) fresh.push_back({std::move(c), 0});
+  } else if (options_.sampler == Sampler::Neighbourhood) {
+    fresh = sample_neighbours(space_, s.elites, s.configurations, n, rng_, acceptable);
   } else if (!options_.soft_restart) {
     fresh = sample_model(space_, s.elites, s.configurations, s.model, n, rng_, acceptable);
   } else {
@@ -258,7 +263,7 @@ void IteratedRace::start_iteration() {
     else return finish("Limit of iterations reached");
   }
   s.current_budget = options_.nb_experiments_per_iteration > 0
-                         ? options_.nb_experiments_per_iteration
+                         ? std::min(options_.nb_experiments_per_iteration, s.remaining_budget)  // never beyond the budget
                          : s.remaining_budget / (s.nb_iterations - s.iteration + 1);
   const bool elitist_saving = options_.elitist && !s.first_race;
   s.nb_configurations = nb_configurations_for(
@@ -267,8 +272,8 @@ void IteratedRace::start_iteration() {
   if (options_.nb_configurations > 0) {
     if (options_.nb_configurations <= s.nb_configurations) {
       s.nb_configurations = options_.nb_configurations;
-    } else if (s.current_budget < s.remaining_budget) {
-      ++s.iteration;  // not enough budget for this iteration: skip to the next one
+    } else if (s.current_budget < s.remaining_budget && options_.nb_iterations > 0) {
+      ++s.iteration;  // not enough budget for this iteration: skip to the next one (with a last one to come)
       return;
     } else {
       return finish("Not enough budget to enforce the value of nbConfigurations");
@@ -299,8 +304,9 @@ void IteratedRace::start_iteration() {
     }
   } else {
     const int n_new = s.nb_configurations - n_elites;
-    s.model = update_model(space_, s.elites, s.configurations, s.model, s.iteration, s.nb_iterations, n_new,
-                           options_.elitist);
+    if (options_.sampler == Sampler::Model)  // the other samplers draw without it
+      s.model = update_model(space_, s.elites, s.configurations, s.model, s.iteration, s.nb_iterations, n_new,
+                             options_.elitist);
     for (const Elite& e : s.elites) race_ids.push_back(e.id);
     const std::vector<int> elite_ids = race_ids;
     for (int id : sample_new(static_cast<std::size_t>(n_new), elite_ids, false)) race_ids.push_back(id);

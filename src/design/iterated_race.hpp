@@ -20,6 +20,14 @@
 
 namespace sd::design {
 
+/// How an iteration after the first draws its new configurations. The first race is always
+/// uniform, as in irace; only Model is irace.
+enum class Sampler {
+  Model,          // irace: around the elites, from the model it learns (the default)
+  Uniform,        // random search: uniform again, raced against the elites (Birattari's F-Race(RSD), iterated)
+  Neighbourhood,  // iterated local search: an elite with one to three moves (design/neighbourhood.hpp)
+};
+
 struct IraceOptions {
   long long max_experiments = 0;       // budget in evaluations (required)
   std::size_t n_instances = 1;         // instances the evaluator knows (SwarmDesign: 1 mission)
@@ -42,6 +50,7 @@ struct IraceOptions {
   /// already in the race is redrawn (up to 100 times), so no budget goes to twins.
   bool unique_new_configurations = true;
   std::vector<Configuration> initial_configurations;  // raced first in iteration 1
+  Sampler sampler = Sampler::Model;
 };
 
 struct Progress {

@@ -127,21 +127,27 @@ double truncated_normal(Rng& rng, double mean, double sd, double lower, double u
   return z * sd + mean;
 }
 
+double sample_uniform_value(const ParameterSpace& space, const Configuration& c, std::size_t i, Rng& rng) {
+  const Parameter& p = space[i];
+  if (p.is_fixed()) return 0.0;
+  if (p.is_numeric()) {
+    const auto dom = space.domain(c, i);
+    return dom ? sample_unif_numeric(space, p, *dom, rng) : kNA;
+  }
+  return static_cast<double>(rng.below(static_cast<std::uint32_t>(p.values.size())));
+}
+
+double sample_normal_value(const ParameterSpace& space, const Configuration& c, std::size_t i, double mean, double sd,
+                           Rng& rng) {
+  const auto dom = space.domain(c, i);
+  return dom ? sample_norm_numeric(space, space[i], mean, sd, *dom, rng) : kNA;
+}
+
 Configuration sample_uniform(const ParameterSpace& space, Rng& rng) {
   Configuration c;
   c.values.assign(space.size(), kNA);
-  for (std::size_t i : space.sampling_order()) {
-    const Parameter& p = space[i];
-    if (!space.is_active(c, i)) continue;
-    if (p.is_fixed()) {
-      c.values[i] = 0.0;
-    } else if (p.is_numeric()) {
-      const auto dom = space.domain(c, i);
-      if (dom) c.values[i] = sample_unif_numeric(space, p, *dom, rng);
-    } else {
-      c.values[i] = static_cast<double>(rng.below(static_cast<std::uint32_t>(p.values.size())));
-    }
-  }
+  for (std::size_t i : space.sampling_order())
+    if (space.is_active(c, i)) c.values[i] = sample_uniform_value(space, c, i, rng);
   return c;
 }
 

@@ -19,6 +19,13 @@ double truncated_normal(Rng& rng, double mean, double sd, double lower, double u
 /// immediately rejected configurations). Retries are bounded as in irace (100).
 using Acceptable = std::function<bool(const Configuration&)>;
 
+/// Parameter i drawn uniformly over its domain given the parameters it depends on in `c` (a
+/// fixed one: its only value; NA when a bound's parameter is NA).
+double sample_uniform_value(const ParameterSpace& space, const Configuration& c, std::size_t i, Rng& rng);
+/// Numeric parameter i drawn around `mean` (a normal truncated to its domain, as the model
+/// draws it; `sd` in the domain's units, on [0, 1] for a log-scaled one).
+double sample_normal_value(const ParameterSpace& space, const Configuration& c, std::size_t i, double mean, double sd,
+                           Rng& rng);
 /// One configuration, every active parameter uniform over its (current) domain.
 Configuration sample_uniform(const ParameterSpace& space, Rng& rng);
 std::vector<Configuration> sample_uniform(const ParameterSpace& space, std::size_t n, Rng& rng,

@@ -137,7 +137,7 @@ PseudoRealityPlan pseudo_reality_from_json(const nlohmann::json& r) {
 
 }  // namespace
 
-std::vector<std::string> builtin_protocol_names() { return {"validation", "combination", "architecture"}; }
+std::vector<std::string> builtin_protocol_names() { return {"validation", "combination", "architecture", "methods"}; }
 
 Protocol builtin_protocol(std::string_view name, bool with_evostick) {
   Protocol protocol;
@@ -151,9 +151,22 @@ Protocol builtin_protocol(std::string_view name, bool with_evostick) {
     } else if (name == "architecture") {
       plan.budget = 200000;  // the thesis' architecture experiment: 200 000 on every mission
       plan.conditions = {{"fsm", kAutoMoDe, {"fsm"}, kAllFlavours}, {"bt", kAutoMoDe, {"bt"}, kAllFlavours}};
+    } else if (name == "methods") {
+      // Issue #57: every method that searches the modular space, on the mission's own flavour and
+      // on the combined space, at 20 000 runs (--budget-scale 5 gives the 100 000 of the goal).
+      plan.budget = 20000;
+      plan.conditions.clear();
+      for (const design::MethodInfo* method : design::kMethods) {
+        if (!method->has_design_space) continue;
+        const std::string n(method->name);
+        plan.conditions.push_back({n, n, {m.architecture}, {m.flavour}});
+      }
+      for (const design::MethodInfo* method : design::kMethods)
+        if (method->has_design_space)
+          plan.conditions.push_back({std::string(method->name) + "-combined", std::string(method->name), kArchitectures, kAllFlavours});
     } else {
       throw ProtocolError("unknown experiment '" + std::string(name) +
-                          "' (validation, combination, architecture, or --file with your own protocol)");
+                          "' (validation, combination, architecture, methods, or --file with your own protocol)");
     }
     if (with_evostick) plan.conditions.push_back(evostick());
     protocol.missions.push_back(std::move(plan));

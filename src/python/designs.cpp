@@ -71,8 +71,10 @@ py::object run_prepared(app::PreparedDesign& prepared, unsigned threads, const p
 
 py::object design(const std::string& mission, long long budget, const std::vector<std::string>& architectures,
                   const std::vector<std::string>& flavours, std::uint64_t seed, const std::string& folder, unsigned threads,
-                  const py::object& progress, const std::string& pseudo_reality, const std::string& pseudo_reality_samples) {
+                  const py::object& progress, const std::string& pseudo_reality, const std::string& pseudo_reality_samples,
+                  const std::string& method) {
   app::NewDesignSettings settings;
+  settings.method = &app::search_method(method);
   settings.mission = mission;
   settings.budget = budget;
   settings.space = app::design_space_request(architectures, flavours);
@@ -99,8 +101,10 @@ py::object read_design(const std::string& folder) { return to_python(app::design
 void bind_designs(py::module_& m) {
   m.def("design", &design, py::arg("mission"), py::arg("budget"), py::arg("architectures"), py::arg("flavours"),
         py::arg("seed"), py::arg("folder"), py::arg("threads") = 0, py::arg("progress") = py::none(),
-        py::arg("pseudo_reality") = "", py::arg("pseudo_reality_samples") = "",
-        "Iterated F-Race in-process, as `swarmdesign design` runs it; the final report document.");
+        py::arg("pseudo_reality") = "", py::arg("pseudo_reality_samples") = "", py::arg("method") = "automode",
+        "A design in-process, as `swarmdesign design` runs it; the final report document.");
+  m.def("design_methods", [] { return to_python(app::design_methods_document()); },
+        "The design methods, one dict each (name, title, summary, has_design_space).");
   m.def("resume_design", &resume_design, py::arg("folder"), py::arg("threads") = 0, py::arg("progress") = py::none(),
         "Continues the design kept in a folder (as `design --resume DIR`); the final report document.");
   m.def("read_design", &read_design, py::arg("folder"), "A design folder's progress, race log and convergence.");

@@ -157,6 +157,7 @@ DesignStore DesignStore::create(const std::filesystem::path& folder, const Desig
     set("fingerprint", meta.fingerprint);
     set("mission_digest", meta.mission_digest);
     set("results_version", std::to_string(meta.results_version));
+    if (meta.method != "automode") set("method", meta.method);  // an AutoMoDe design's reads as before
     if (!meta.pseudo_reality.empty()) {
       set("pseudo_reality", meta.pseudo_reality);
       set("pseudo_reality_document", meta.pseudo_reality_document);
@@ -230,6 +231,8 @@ void DesignStore::read_meta() {
   meta_.pseudo_reality = optional_value("pseudo_reality");  // absent: the design model alone
   meta_.pseudo_reality_document = optional_value("pseudo_reality_document");
   meta_.pseudo_reality_samples = optional_value("pseudo_reality_samples");
+  const std::string method = optional_value("method");
+  meta_.method = method.empty() ? "automode" : method;
   auto step = db.prepare("SELECT step FROM checkpoint WHERE id = 1");
   step_ = step.step() ? step.integer(0) : 0;
   auto elites = db.prepare("SELECT count(DISTINCT iteration) FROM elites");

@@ -53,6 +53,9 @@ struct DesignMeta {
   /// named it, its whole text (so it resumes alike if the file changes) and the samples its
   /// instances are, "A-B". Empty for a design in the design model alone.
   std::string pseudo_reality{}, pseudo_reality_document{}, pseudo_reality_samples{};
+  /// The design method (design/methods.hpp) whose optimiser raced it; absent (automode) in
+  /// designs made before there was a choice.
+  std::string method = "automode";
 };
 
 /// One checkpoint's new rows, written in one transaction.

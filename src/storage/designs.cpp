@@ -13,7 +13,7 @@ namespace sd::storage {
 namespace {
 constexpr std::string_view kSelectDesigns =
     "SELECT id, architectures, flavours, mission, budget, seed, state, pid, path, best_config, best_score, "
-    "       created_at, updated_at, finished_at, coalesce(owner, ''), coalesce(heartbeat_at, 0) "
+    "       created_at, updated_at, finished_at, coalesce(owner, ''), coalesce(heartbeat_at, 0), method "
     "FROM designs WHERE project_id = ? ";
 
 Design read_design(const Statement& row, const Workspace& workspace) {
@@ -34,6 +34,7 @@ Design read_design(const Statement& row, const Workspace& workspace) {
   if (!row.is_null(13)) design.finished_at = row.integer(13);
   design.owner = row.text(14);
   design.heartbeat_at = row.integer(15);
+  design.method = row.text(16);
   return design;
 }
 }  // namespace
@@ -89,10 +90,10 @@ Design Designs::start(const DesignRequest& request) {
   const std::int64_t now = unix_now();
   const auto project_folder = std::filesystem::relative(project_.folder, workspace_.home());
   db.prepare("INSERT INTO designs (project_id, architectures, flavours, mission, budget, seed, pid, owner, heartbeat_at, "
-             "path, created_at, updated_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, '', ?, ?)")
+             "path, created_at, updated_at, method) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, '', ?, ?, ?)")
       .bind(1, project_.id).bind(2, request.architectures).bind(3, request.flavours).bind(4, *project_.mission)
       .bind(5, *project_.budget).bind(6, static_cast<std::int64_t>(request.seed)).bind(7, owner_pid(request.owner))
-      .bind(8, request.owner).bind(9, now).bind(10, now).bind(11, now).run();
+      .bind(8, request.owner).bind(9, now).bind(10, now).bind(11, now).bind(12, request.method).run();
   const std::int64_t id = db.last_insert_id();
   const auto folder = project_folder / "designs" / std::to_string(id);
   db.prepare("UPDATE designs SET path = ? WHERE id = ?").bind(1, folder.string()).bind(2, id).run();

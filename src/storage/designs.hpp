@@ -26,11 +26,13 @@ struct DesignRequest {
   std::string flavours;       // e.g. "chocolate,maple"
   std::uint64_t seed = 0;
   std::string owner;          // the job that runs the design: Owner::text() (storage/lease.hpp)
+  std::string method = "automode";  // design/methods.hpp
 };
 
 struct Design {
   std::int64_t id = 0;
   std::string architectures, flavours, mission;
+  std::string method = "automode";  // the optimiser that races it (design/methods.hpp)
   std::int64_t budget = 0;
   std::uint64_t seed = 0;
   DesignState state = DesignState::running;

@@ -219,6 +219,10 @@ ALTER TABLE users ADD COLUMN disabled INTEGER NOT NULL DEFAULT 0 CHECK (disabled
 ALTER TABLE users ADD COLUMN last_sign_in INTEGER;
 UPDATE users SET role = 'admin' WHERE id = (SELECT min(id) FROM users);
 )sql",
+    // 9: the design method that races a project's design (issue #57); older rows were AutoMoDe's.
+    R"sql(
+ALTER TABLE designs ADD COLUMN method TEXT NOT NULL DEFAULT 'automode';
+)sql",
 };
 
 }  // namespace

@@ -16,7 +16,7 @@ using nlohmann::json;
 void add_design_form_routes(Routes& routes) {
   routes.get("/api/design-space", [](Call& call) -> json {
     return app::design_space_document(call.request.get_param_value("architectures"),
-                                      call.request.get_param_value("flavours"));
+                                      call.request.get_param_value("flavours"), call.request.get_param_value("method"));
   });
 
   routes.post(std::string("/api/projects/") + kNamePattern + "/budget", [](Call& call) -> json {

@@ -44,6 +44,11 @@ app::ProjectDesignRequest design_request(const json& body) {
     if (request.pseudo_reality.empty()) throw app::InvalidRequest("pseudo_reality_samples needs pseudo_reality");
     request.pseudo_reality_samples = text_field(body, "pseudo_reality_samples");
   }
+  // The optimiser (run-design --method): automode's Iterated F-Race when absent.
+  if (body.contains("method") && !body.at("method").is_null()) {
+    request.method = &app::search_method(text_field(body, "method"));
+    request.space_given = true;
+  }
   return request;
 }
 

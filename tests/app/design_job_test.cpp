@@ -180,5 +180,57 @@ TEST_F(DesignJob, AFinishedDesignIsNotResumedAndAFolderIsNotReused) {
   EXPECT_NO_THROW(app::prepare_resume(folder_ / "d", true));
 }
 
+TEST_F(DesignJob, EachSearchMethodResumesToItsUninterruptedDesignAndTheCliRunsTheSame) {
+  for (const design::MethodInfo* method : {&design::kRandomSearch, &design::kLocalSearch}) {
+    const std::string name(method->name);
+    SCOPED_TRACE(name);
+    auto asked = settings();
+    asked.method = method;
+    app::PreparedDesign whole = app::prepare_new_design(asked, folder_ / (name + "-whole"));
+    const app::DesignOutcome done = app::run_design(whole, {.threads = 2});
+    ASSERT_TRUE(done.report);
+    EXPECT_EQ(done.report->method, name);
+    EXPECT_EQ(app::design_report_document(*done.report).at("method"), name);
+
+    const auto parts = folder_ / (name + "-parts");
+    app::PreparedDesign first = app::prepare_new_design(asked, parts);
+    Watcher stopper(9);
+    ASSERT_TRUE(app::run_design(first, {.threads = 1, .observer = &stopper, .cancel = &stopper.token}).cancelled);
+    app::PreparedDesign rest = app::prepare_resume(parts);
+    EXPECT_EQ(rest.method, method);  // read back from design.db
+    const app::DesignOutcome resumed = app::run_design(rest, {.threads = 2});
+    ASSERT_TRUE(resumed.report);
+    EXPECT_EQ(outcome_of(*resumed.report), outcome_of(*done.report));
+    EXPECT_EQ(experiment_log(parts), experiment_log(folder_ / (name + "-whole")));
+
+    // Asked again with the other optimiser, the folder's design is refused, naming its method.
+    try {
+      app::prepare_design_in(settings(), parts);
+      ADD_FAILURE() << "another method must not continue this design";
+    } catch (const app::DesignFolderError& e) {
+      EXPECT_NE(std::string(e.what()).find("method " + name), std::string::npos) << e.what();
+    }
+
+    const Outcome cli = run_swarmdesign({"design", "--mission", mission_, "--budget", "1100", "--fsm", "--chocolate",
+                                         "--seed", "5", "--method", name, "--threads", "1", "--json", "--out",
+                                         (folder_ / (name + "-cli")).string()},
+                                        "", {});
+    ASSERT_EQ(cli.exit_code, 0) << cli.err;
+    EXPECT_EQ(design_outcome(cli.out), outcome_of(*done.report));
+  }
+  // Not the same design as Iterated F-Race's with the same seed.
+  app::PreparedDesign irace = app::prepare_new_design(settings(), folder_ / "irace");
+  ASSERT_TRUE(app::run_design(irace, {.threads = 2}).report);
+  EXPECT_NE(experiment_log(folder_ / "irace"), experiment_log(folder_ / "random-search-whole"));
+  EXPECT_NE(experiment_log(folder_ / "local-search-whole"), experiment_log(folder_ / "random-search-whole"));
+
+  const Outcome unknown = run_swarmdesign({"design", "--mission", mission_, "--budget", "1100", "--method", "evostick",
+                                           "--out", (folder_ / "evo").string()},
+                                          "", {});
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_NE(unknown.err.find("unknown design method 'evostick' (automode, random-search or local-search)"), std::string::npos)
+      << unknown.err;
+}
+
 }  // namespace
 }  // namespace sd::test

@@ -55,6 +55,21 @@ TEST(experiments_Protocol, CombinationAndArchitecture) {
   EXPECT_THROW(builtin_protocol("validaton"), ProtocolError);
 }
 
+TEST(experiments_Protocol, MethodsRacesEveryMethodOfTheModularSpaceOnItsFlavourAndOnTheCombinedSpace) {
+  const Protocol p = builtin_protocol("methods");
+  EXPECT_EQ(condition_names(p), (std::vector<std::string>{"automode", "random-search", "local-search", "automode-combined",
+                                                          "random-search-combined", "local-search-combined"}));
+  for (const auto& m : p.missions) {
+    EXPECT_EQ(m.budget, 20000) << m.mission;
+    ASSERT_EQ(m.conditions.size(), 6u);
+    EXPECT_EQ(m.conditions[1].method, "random-search");
+    EXPECT_EQ(m.conditions[1].flavours.size(), 1u);
+    EXPECT_EQ(m.conditions[5].method, "local-search");
+    EXPECT_EQ(m.conditions[5].flavours.size(), 5u);
+  }
+  EXPECT_EQ(to_json(protocol_from_json(to_json(p))), to_json(p));
+}
+
 TEST(experiments_Protocol, FileRoundTripAndOverrides) {
   const Protocol p = builtin_protocol("combination", true);
   EXPECT_EQ(to_json(protocol_from_json(to_json(p))), to_json(p));

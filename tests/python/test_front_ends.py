@@ -101,6 +101,22 @@ def test_a_robust_design_is_the_clis(account, tmp_path):
         sd.design(mission, 1100, architectures="fsm", flavours="chocolate", seed=4, folder=tmp_path / "py")
 
 
+def test_a_design_by_another_method_is_the_clis(account, tmp_path):
+    searches = [m["name"] for m in sd.design_methods() if m["has_design_space"]]
+    assert searches == ["automode", "random-search", "local-search"]
+    mission = next((account_folder(account) / "fe").glob("aac-short.json"))
+    here = sd.design(mission, 1100, architectures="fsm", flavours="chocolate", seed=4, folder=tmp_path / "py",
+                     method="local-search")
+    cli = json.loads(run_cli("design", "--mission", mission, "--budget", 1100, "--fsm", "--chocolate", "--seed", 4,
+                             "--method", "local-search", "--out", tmp_path / "cli", "--json"))
+    assert here.report["best"] == cli["best"]
+    assert here.report["method"] == cli["method"] == "local-search"
+    assert sd.Design.open(tmp_path / "py").method == "local-search"
+    with pytest.raises(sd.InvalidRequestError, match="unknown design method 'evostick'"):
+        sd.design(mission, 1100, architectures="fsm", flavours="chocolate", seed=4, folder=tmp_path / "evo",
+                  method="evostick")
+
+
 def account_folder(account):
     return Path(os.environ["SWARMDESIGN_HOME"]) / "users" / "py-front" / "projects"
 

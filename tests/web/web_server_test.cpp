@@ -1078,5 +1078,34 @@ TEST_F(WebServer, ARobustDesignIsStartedWithItsPseudoRealitiesAndBadOnesAreRefus
   EXPECT_EQ(meta.pseudo_reality_samples, "101-103");
 }
 
+TEST_F(WebServer, ADesignRacedByAnotherMethodIsStartedWithItAndAnUnknownOneIsRefused) {
+  const auto folder = root_ / "home" / "users" / "alice" / "projects" / "ls";
+  std::filesystem::create_directories(folder);
+  ASSERT_EQ(alice_->post("/api/projects", {{"name", "ls"}, {"mission", write_short_mission(folder, 2).string()}, {"budget", "1100"}}).status, 200);
+  const json space = {{"flavours", "chocolate"}, {"architectures", "fsm"}, {"seed", 4}};
+  json unknown = space;
+  unknown["method"] = "evostick";
+  const Answer refused = alice_->post("/api/projects/ls/designs", unknown);
+  EXPECT_EQ(refused.status, 400);
+  EXPECT_NE(refused.text.find("unknown design method 'evostick'"), std::string::npos) << refused.text;
+  EXPECT_TRUE(alice_->get("/api/projects/ls/designs").body.empty()) << "nothing recorded for a refused request";
+  // The form's minimum follows the method; the list of methods comes with it.
+  const Answer form = alice_->get("/api/design-space?architectures=fsm&flavours=chocolate&method=local-search");
+  ASSERT_EQ(form.status, 200) << form.text;
+  EXPECT_EQ(form.body.at("method"), "local-search");
+  EXPECT_EQ(form.body.at("methods").size(), 3u);
+
+  json body = space;
+  body["method"] = "local-search";
+  const Answer started = alice_->post("/api/projects/ls/designs", body);
+  ASSERT_EQ(started.status, 200) << started.text;
+  EXPECT_EQ(started.body.at("method"), "local-search");
+  ASSERT_TRUE(wait_until([&] { return alice_->get("/api/projects/ls/status").body.at("design").at("state") == "finished"; },
+                         std::chrono::seconds(120)));
+  const auto db = folder / "designs" / std::to_string(started.body.at("id").get<std::int64_t>());
+  EXPECT_EQ(storage::DesignStore::open(db).meta().method, "local-search");
+  EXPECT_EQ(alice_->get("/api/projects/ls/designs").body.at(0).at("method"), "local-search");
+}
+
 }  // namespace
 }  // namespace sd::test

@@ -27,6 +27,7 @@ json design_report_document(const DesignReport& r) {
   json out = {{"folder", r.folder.string()},
           {"mission", r.mission},
           {"direction", r.direction},
+          {"method", r.method},
           {"budget", r.budget},
           {"seed", r.seed},
           {"architectures", r.architectures},
@@ -108,6 +109,7 @@ json design_row_document(const storage::Design& d) {
           {"seed", d.seed},
           {"architectures", d.architectures},
           {"flavours", d.flavours},
+          {"method", d.method},
           {"created", storage::format_time(d.created_at)},
           {"best_configuration", d.best_config ? json(*d.best_config) : json()},
           {"best_score", d.best_score ? json(*d.best_score) : json()}};
