@@ -53,7 +53,12 @@ def main() -> int:
         if path not in digests:
             try:
                 with open(path, "rb") as f:
-                    digests[path] = hashlib.sha256(f.read()).hexdigest()
+                    content = f.read()
+                # A file the build generated (a unity source #includes each .cpp by its absolute
+                # path) is digested with the clone's paths taken out, as commands are.
+                if os.path.realpath(path).startswith(build_abs + os.sep):
+                    content = content.replace(build_abs.encode(), b"<build>").replace(root.encode(), b"<root>")
+                digests[path] = hashlib.sha256(content).hexdigest()
             except OSError:
                 digests[path] = "missing"
         return digests[path]
