@@ -49,7 +49,7 @@ async function openForm() {
   await page.click('[data-testid="project-lab"]');
   await page.waitForFunction(() => document.getElementById('monitor-project').textContent === 'lab');
   if (!await page.evaluate(() => document.getElementById('exp-new').open)) await page.click('#exp-new summary');
-  await page.waitForFunction(() => document.querySelectorAll('#exp-protocol option').length === 4);
+  await page.waitForFunction(() => document.querySelectorAll('#exp-protocol option').length === 5);
 }
 
 test('a thesis protocol is planned with the CLI\'s choices, and nothing is recorded', { timeout: 60000 }, async () => {

@@ -701,7 +701,7 @@ class Account:
                         **choices: Any) -> Any:
         """An experiment's plan, nothing started: ``swarmdesign experiment --dry-run --json``'s
         document and the page's Plan. ``protocol`` names a built-in one (validation,
-        combination, architecture), or give ``file`` (a protocol file) or ``text`` (its JSON).
+        combination, architecture, methods), or give ``file`` (a protocol file) or ``text`` (its JSON).
         ``choices`` are the CLI's flags and the page's fields: missions, designs,
         assessment_seeds, budget_scale, seed, name, evostick, pseudo_reality,
         pseudo_reality_samples. With estimate=True, also how long it would take here with

@@ -820,8 +820,9 @@ TEST_F(WebServer, AnExperimentIsStartedFollowedStoppedAndResumedFromThePageByIts
   // The built-in protocols are offered whole.
   const Answer protocols = alice_->get("/api/protocols");
   ASSERT_EQ(protocols.status, 200);
-  ASSERT_EQ(protocols.body.size(), 3u);
+  ASSERT_EQ(protocols.body.size(), 4u);
   EXPECT_EQ(protocols.body.at(0).at("name"), "validation");
+  EXPECT_EQ(protocols.body.at(3).at("name"), "methods");
   EXPECT_FALSE(protocols.body.at(0).at("protocol").at("missions").empty());
 
   // Planned only: nothing recorded.
