@@ -1,6 +1,7 @@
 #include "storage/schema.hpp"
 
 #include <array>
+#include <cstdint>
 #include <string>
 
 namespace sd::storage {
@@ -220,8 +221,17 @@ ALTER TABLE users ADD COLUMN last_sign_in INTEGER;
 UPDATE users SET role = 'admin' WHERE id = (SELECT min(id) FROM users);
 )sql",
     // 9: the design method that races a project's design (issue #57); older rows were AutoMoDe's.
+    // An experiment's design takes any method design/methods.hpp lists (the protocol reader
+    // checks the name), where its CHECK named two. A CHECK is not stored in the rows, so the
+    // table's text is edited in place, SQLite's documented way for such a change (rebuilding the
+    // table would cascade the deletion of its assessments); migrate() then bumps
+    // schema_version so that every connection reads the new text.
     R"sql(
 ALTER TABLE designs ADD COLUMN method TEXT NOT NULL DEFAULT 'automode';
+PRAGMA writable_schema = ON;
+UPDATE sqlite_master SET sql = replace(sql, 'CHECK (method IN (''automode'', ''evostick''))', 'CHECK (method <> '''')')
+  WHERE type = 'table' AND name = 'experiment_designs';
+PRAGMA writable_schema = OFF;
 )sql",
 };
 
@@ -244,6 +254,15 @@ void migrate(Database& db) {
     const int current = schema_version(db);
     if (current >= latest) break;
     db.execute(kMigrations[static_cast<std::size_t>(current)]);
+    // A migration that edits a table's text (9) must make connections read the schema again;
+    // after any other, one more schema change changes nothing.
+    std::int64_t schema_cookie = 0;
+    {
+      auto cookie = db.prepare("PRAGMA schema_version");
+      cookie.step();
+      schema_cookie = cookie.integer(0);
+    }
+    db.execute("PRAGMA schema_version = " + std::to_string(schema_cookie + 1));
     db.execute("PRAGMA user_version = " + std::to_string(current + 1));
     transaction.commit();
   }

@@ -159,6 +159,30 @@ TEST_F(experiment, TheEvoStickBaselineIsAConditionLikeAnyOther) {
   EXPECT_EQ(r["architectures"][1]["nn"], 1);
 }
 
+TEST_F(experiment, TheDesignMethodsAreConditionsLikeAnyOtherEachDesignMadeByItsOwnMethod) {
+  // The "methods" protocol's conditions at a small scale: one mission, one design each.
+  user_with_active_project("alice", "thesis");
+  const std::string mission = write_short_mission(scratch()).string();
+  const auto protocol = write_file("methods.json", R"({"name": "methods-small", "designs": 1, "assessment_seeds": 2, "missions": [
+      {"mission": ")" + mission + R"(", "budget": 1100, "conditions": [
+        {"name": "automode", "method": "automode", "architectures": ["fsm"], "flavours": ["chocolate"]},
+        {"name": "random-search", "method": "random-search", "architectures": ["fsm"], "flavours": ["chocolate"]},
+        {"name": "local-search", "method": "local-search", "architectures": ["fsm"], "flavours": ["chocolate"]}]}]})");
+  run_ok({"experiment", "--file", protocol.string()});
+  const json r = report("methods-small", "thesis", scratch() / "methods");
+  ASSERT_EQ(r["designs"].size(), 3u);
+  for (const auto& d : r["designs"]) {
+    const std::string method = d["condition"];
+    // The same design as `design --method` makes from the seed the experiment gave it.
+    const json alone = design_outcome(run_ok({"design", "--mission", mission, "--budget", "1100", "--fsm", "--chocolate",
+                                              "--seed", std::to_string(d["seed"].get<std::uint64_t>()), "--method", method,
+                                              "--threads", "2", "--json", "--out",
+                                              (scratch() / (method + "-" + d["replicate"].dump())).string()}));
+    EXPECT_EQ(d["configuration"], alone["best"]["configuration"]) << method;
+    EXPECT_EQ(d["runs_used"], alone["experiments_used"]) << method;
+  }
+}
+
 TEST_F(experiment, DryRunCountsTheRunsAndMeasuresTheTime) {
   const json plan = json::parse(run_ok({"experiment", "validation", "--dry-run", "--json"}));
   EXPECT_EQ(plan["designs"].size(), 50u);  // 5 missions x 1 condition x 10 designs

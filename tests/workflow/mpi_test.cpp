@@ -53,6 +53,16 @@ TEST_F(mpi_runs, ADesignOnThreeRanksIsTheThreadedDesignBitForBit) {
   EXPECT_EQ(experiment_log(scratch() / "hybrid"), experiment_log(scratch() / "threads"));
 }
 
+TEST_F(mpi_runs, EachSearchMethodOnTwoRanksIsItsThreadedDesignBitForBit) {
+  for (const std::string method : {"random-search", "local-search"}) {
+    std::vector<std::string> threads = design_args(method + "-threads", 2), ranks = design_args(method + "-ranks", 1);
+    for (auto* args : {&threads, &ranks}) args->insert(args->end(), {"--method", method});
+    const std::string threaded = run_ok(threads);
+    EXPECT_EQ(design_outcome(mpirun_ok(2, ranks)), design_outcome(threaded)) << method;
+    EXPECT_EQ(experiment_log(scratch() / (method + "-ranks")), experiment_log(scratch() / (method + "-threads"))) << method;
+  }
+}
+
 TEST_F(mpi_runs, EvaluateOnRanksPrintsTheThreadedScores) {
   const std::vector<std::string> args{"evaluate", "--mission", "aac", "--seeds", "1-24", "--threads", "1",
                                       "--fsm-config", "--nstates", "3", "--s0", "14", "--att0", "3.5", "--n0", "1",
