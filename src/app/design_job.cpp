@@ -19,21 +19,16 @@ namespace sd::app {
 
 namespace {
 
-design::IraceOptions engine_options(long long budget, std::uint64_t seed, std::size_t instances = 1) {
-  design::IraceOptions o;
-  o.max_experiments = budget;
-  o.seed = seed;
-  // One mission; every position of the instance list has its own seed. A robust design's
-  // instances are its pseudo-reality samples.
-  o.n_instances = instances;
-  return o;
+/// The method's optimiser settings for a prepared design (its space and instances set): one
+/// mission, every position of the instance list with its own seed; a robust design's instances
+/// are its pseudo-reality samples.
+design::IraceOptions design_options(const PreparedDesign& d, long long budget, std::uint64_t seed) {
+  return design::method_options(*d.method, budget, seed, std::max<std::size_t>(1, d.instance_models.size()), *d.space);
 }
 
-/// The method's optimiser settings for a prepared design (its space and instances set).
-design::IraceOptions design_options(const PreparedDesign& d, long long budget, std::uint64_t seed) {
-  const std::size_t instances = std::max<std::size_t>(1, d.instance_models.size());
-  if (d.method == &design::kAutoMoDe) return engine_options(budget, seed, instances);
-  return design::method_options(*d.method, budget, seed, instances, *d.space);
+/// How a refusal names the optimiser: AutoMoDe's by its algorithm, as it always did.
+std::string optimiser_name(const design::MethodInfo& method) {
+  return &method == &design::kAutoMoDe ? "Iterated F-Race" : std::string(method.name);
 }
 
 /// The pseudo-realities of a robust design: the models its instances run in.
@@ -58,11 +53,11 @@ std::filesystem::path default_design_folder(const std::string& mission_name, std
 
 long long minimum_design_budget(const design::ParameterSpace& space, int nb_iterations) {
   const int n = design::default_nb_iterations(space.nb_variable());
-  return design::minimum_budget(engine_options(1, 0), n, nb_iterations > 0 ? nb_iterations : n);
+  return design::minimum_budget(design::IraceOptions{}, n, nb_iterations > 0 ? nb_iterations : n);
 }
 
 long long minimum_design_budget(const design::MethodInfo& method, const design::ParameterSpace& space) {
-  return &method == &design::kAutoMoDe ? minimum_design_budget(space) : design::method_minimum_budget(method, space);
+  return design::method_minimum_budget(method, space);
 }
 
 void require_minimum_budget(long long budget, const design::ParameterSpace& space, int nb_iterations) {
@@ -104,12 +99,9 @@ PreparedDesign check_new_design(const NewDesignSettings& settings) {
   d.choice = resolve_space(settings.space);
   d.space = std::make_unique<design::ParameterSpace>(design::build_design_space(d.choice));
   d.method = settings.method;
-  if (d.method == &design::kAutoMoDe) {
-    require_minimum_budget(settings.budget, *d.space);
-  } else if (const long long minimum = minimum_design_budget(*d.method, *d.space); settings.budget < minimum) {
+  if (const long long minimum = minimum_design_budget(*d.method, *d.space); settings.budget < minimum)
     throw InvalidRequest("a budget of " + std::to_string(settings.budget) + " simulation runs is below the minimum of " +
-                         std::to_string(minimum) + " that " + std::string(d.method->name) + " needs for this design space");
-  }
+                         std::to_string(minimum) + " that " + optimiser_name(*d.method) + " needs for this design space");
   if (!settings.pseudo_reality.empty())
     use_pseudo_realities(d,
                          settings.pseudo_reality_document.empty()

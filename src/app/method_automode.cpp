@@ -89,7 +89,9 @@ class AutoMoDe final : public DesignMethod {
     return stored_progress_document(storage::read_design_progress(folder));
   }
 
-  std::string describe(const storage::PlannedDesign& d) const override { return d.architectures + " / " + d.flavours; }
+  std::string describe(const storage::PlannedDesign& d) const override {
+    return d.architectures + " / " + d.flavours + (&info_ == &design::kAutoMoDe ? "" : " / " + std::string(info_.name));
+  }
   bool runs_on_cluster() const override { return true; }
 
  private:
