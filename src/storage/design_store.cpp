@@ -7,7 +7,6 @@
 #include <cmath>
 #include <ctime>
 
-#include "core/private_files.hpp"
 #include "storage/power_cut.hpp"
 
 namespace sd::storage {
@@ -136,9 +135,8 @@ DesignStore DesignStore::create(const std::filesystem::path& folder, const Desig
   const std::filesystem::path draft = folder / "design.db.new";
   PowerCutWindow power_cut;  // the tests' and the benchmark's kill inside this write; nothing otherwise
   for (const char* suffix : {"", "-wal", "-shm", "-journal"}) std::filesystem::remove(draft.string() + suffix);
-  create_private_file(draft);  // a design's race data is its owner's alone, as the home's database is
   try {
-    Database db(draft, true);
+    Database db(draft, true);  // created 0600: a design's race data is its owner's alone
     Transaction t(db);
     db.execute(kSchema);
     auto put = db.prepare("INSERT INTO meta (key, value) VALUES (?, ?)");

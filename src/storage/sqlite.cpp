@@ -4,6 +4,7 @@
 #include <chrono>
 #include <thread>
 
+#include "core/private_files.hpp"
 #include "storage/power_cut.hpp"
 
 namespace sd::storage {
@@ -39,6 +40,9 @@ void switch_to_wal(sqlite3* db) {
 
 Database::Database(const std::filesystem::path& path, bool create) : path_(path) {
   install_power_cut_if_asked();  // the benchmark's fault injection; a no-op otherwise
+  // A database this opens anew is its owner's alone (0600, and so are its -wal and -shm files),
+  // whatever the umask and whichever front end creates it: the home's, a design's design.db.
+  if (create) create_private_file(path);
   const int flags = SQLITE_OPEN_READWRITE | (create ? SQLITE_OPEN_CREATE : 0) | SQLITE_OPEN_FULLMUTEX;
   if (sqlite3_open_v2(path.c_str(), &db_, flags, nullptr) != SQLITE_OK) {
     const std::string message = "cannot open database " + path.string();

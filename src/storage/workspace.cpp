@@ -18,9 +18,7 @@ Workspace::Workspace() : Workspace(sd::swarmdesign_home()) {}
 
 Workspace::Workspace(std::filesystem::path home) : home_(std::move(home)) {
   create_private_folders(home_);
-  const auto path = home_ / "swarmdesign.db";
-  create_private_file(path);
-  database_ = std::make_unique<Database>(path);
+  database_ = std::make_unique<Database>(home_ / "swarmdesign.db");  // created 0600
   migrate(*database_);
 }
 
