@@ -633,6 +633,26 @@ class Account:
     def projects(self) -> Any:
         return _core.account_projects(self.home)
 
+    def new_project(self, name: str, mission: MissionLike, budget: Union[int, str]) -> Any:
+        """Makes a project with its mission (a catalogue name or a mission file) and budget, and
+        makes it the active one, as ``new-project``, ``set-mission`` and ``set-budget`` do; every
+        value is checked before anything is written. The project's document."""
+        return _core.account_new_project(self.home, str(name), _mission_reference(mission), str(budget))
+
+    def configure_project(self, name: str, *, mission: Optional[MissionLike] = None,
+                          budget: Union[None, int, str] = None) -> Any:
+        """Sets a project's mission and/or budget (``set-mission``, ``set-budget``); the project
+        becomes the active one, as the page's budget field makes it. The project's document."""
+        return _core.account_configure_project(self.home, str(name),
+                                               None if mission is None else _mission_reference(mission),
+                                               None if budget is None else str(budget))
+
+    def delete_project(self, name: str, confirm: str) -> None:
+        """Deletes a project with its designs, experiments and files, as ``delete-project``
+        does: ``confirm`` must repeat the name (InvalidRequestError otherwise); ConflictError
+        while one of its designs or experiments runs."""
+        _core.account_delete_project(self.home, str(name), str(confirm))
+
     def designs(self, project: Optional[str] = None) -> Any:
         """The project's designs (the active project when None), one row each."""
         return _table(_core.account_designs(self.home, project))

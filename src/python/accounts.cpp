@@ -196,9 +196,40 @@ py::object experiment_report(const std::string& experiment, const std::optional<
   return to_python(app::experiment_report_document(*home, app::signed_in_user(*home), experiment, project));
 }
 
+// Projects made, configured and deleted as `new-project`, `set-mission`, `set-budget` and
+// `delete-project` make them (app/projects): the same checks, before anything is written.
+py::object new_project(const std::optional<std::string>& home_folder, const std::string& name, const std::string& mission,
+                       const std::string& budget) {
+  auto home = open_home(home_folder);
+  const storage::User user = app::signed_in_user(*home);
+  return to_python(app::project_document(
+      app::create_configured_project(*home, user, name, mission, budget, app::FileScope::local())));
+}
+
+py::object configure_project(const std::optional<std::string>& home_folder, const std::string& name,
+                             const std::optional<std::string>& mission, const std::optional<std::string>& budget) {
+  auto home = open_home(home_folder);
+  const storage::User user = app::signed_in_user(*home);
+  storage::Project project = app::select_project(*home, user, name);
+  if (mission) project = app::set_mission(*home, user, *mission);
+  if (budget) project = app::set_budget(*home, user, *budget);
+  return to_python(app::project_document(project));
+}
+
+void delete_project(const std::optional<std::string>& home_folder, const std::string& name, const std::string& confirmation) {
+  auto home = open_home(home_folder);
+  app::delete_project(*home, app::signed_in_user(*home), name, confirmation);
+}
+
 }  // namespace
 
 void bind_accounts(py::module_& m) {
+  m.def("account_new_project", &new_project, py::arg("home"), py::arg("name"), py::arg("mission"), py::arg("budget"),
+        "A project with its mission and budget, made active (`new-project`, `set-mission`, `set-budget`).");
+  m.def("account_configure_project", &configure_project, py::arg("home"), py::arg("name"), py::arg("mission"),
+        py::arg("budget"), "A project's mission and/or budget set, the project made active (`set-mission`, `set-budget`).");
+  m.def("account_delete_project", &delete_project, py::arg("home"), py::arg("name"), py::arg("confirmation"),
+        "Deletes a project and everything in it once confirmation repeats its name (`delete-project`).");
   m.def("account_projects", &projects, py::arg("home") = py::none(), "The signed-in user's projects (`projects --json`).");
   m.def("account_designs", &designs, py::arg("home") = py::none(), py::arg("project") = py::none(),
         "A project's designs, one row each (the active project when none is named).");

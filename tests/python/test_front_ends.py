@@ -117,6 +117,30 @@ def test_a_design_by_another_method_is_the_clis(account, tmp_path):
                   method="evostick")
 
 
+def test_projects_are_made_configured_and_deleted_as_the_cli_does(account):
+    try:
+        made = account.new_project("py-made", "aac", 1500)
+        assert made["name"] == "py-made" and made["mission"] == "aac" and made["budget"] == 1500
+        listed = {p["name"]: p for p in json.loads(run_cli("show-projects", "--json"))["projects"]}
+        assert listed["py-made"] == made
+        # Refused before anything is written: a bad budget, a taken name, a mission that is not one.
+        with pytest.raises(sd.InvalidRequestError, match="budget"):
+            account.new_project("py-bad", "aac", "lots")
+        with pytest.raises(sd.ConflictError):
+            account.new_project("py-made", "aac", 1500)
+        with pytest.raises(sd.SwarmDesignError, match="no-such-mission"):
+            account.configure_project("py-made", mission="no-such-mission")
+        assert "py-bad" not in {p["name"] for p in account.projects()["projects"]}
+        changed = account.configure_project("py-made", budget=3000)
+        assert changed["budget"] == 3000 and changed["mission"] == "aac"
+        with pytest.raises(sd.InvalidRequestError):
+            account.delete_project("py-made", "py-mad")
+        account.delete_project("py-made", "py-made")
+        assert "py-made" not in {p["name"] for p in json.loads(run_cli("show-projects", "--json"))["projects"]}
+    finally:
+        run_cli("select-project", "fe")  # the module's other tests use the active project
+
+
 def account_folder(account):
     return Path(os.environ["SWARMDESIGN_HOME"]) / "users" / "py-front" / "projects"
 
