@@ -194,8 +194,9 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
     // A cluster project's design runs as a Slurm job: its state, and the last problem in one line.
     const job = s.cluster_job;
     const slurm = job ? ` · Slurm job ${job.job_id ?? '(not submitted)'}${job.slurm_state ? ` ${job.slurm_state}` : ''}${job.note ? ` · ${job.note}` : ''}` : '';
-    // Iterated F-Race ends when its budget cannot pay another race: the normal end, not an error.
-    const spent = design.state === 'finished' && /^not enough budget/i.test(progress.finish_reason || '');
+    // Iterated F-Race ends when its budget is spent or cannot pay another race (which of the two
+    // depends on the seed): the normal end, not an error.
+    const spent = design.state === 'finished' && /^(not enough budget|budget exhausted)/i.test(progress.finish_reason || '');
     const reason = spent ? '' : progress.finish_reason ? ` · ${progress.finish_reason}` : '';
     $('design-state').textContent = `${spent ? 'finished: budget spent' : design.state}${s.running_here ? ' (here)' : ''}${slurm}${reason}`;
     $('design-state').title = progress.finish_reason ? `finished because: ${progress.finish_reason}` : '';
