@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -73,7 +74,7 @@ void run_design_command(const DesignOptions& o) {
 std::string method_lines() {
   std::string text = "Methods (--method):\n";
   for (const design::MethodInfo* m : design::kMethods)
-    if (m->has_design_space) text += "  " + std::string(m->name) + std::string(15 - m->name.size(), ' ') + std::string(m->summary) + "\n";
+    if (m->has_design_space) text += "  " + std::string(m->name) + std::string(std::max<std::size_t>(15, m->name.size() + 1) - m->name.size(), ' ') + std::string(m->summary) + "\n";
   return text;
 }
 
