@@ -104,11 +104,36 @@ while read -r f key; do
   fi
 done < "$logs/keys"
 
-# One log per file; --quiet drops clang-tidy's "N warnings generated" chatter.
-if ((${#to_check[@]})); then
-  printf '%s\n' "${to_check[@]}" | xargs -P "$jobs" -I{} sh -c \
+# One log per batch of files sharing a command (scripts/lib/tidy_batches.py: the headers they
+# include are parsed and checked once per batch instead of once per file, about 4x faster);
+# --quiet drops clang-tidy's "N warnings generated" chatter. The batch sources live outside the
+# repository, so the configuration is named.
+run_tidy() {  # run_tidy < sources, one per line: checks each, one log each
+  xargs -P "$jobs" -I{} sh -c \
     'f="$1"; shift; "$@" "$f" > "'"$logs"'/$(printf %s "$f" | tr / _).log" 2>&1 || true' \
-    sh {} "$tidy" -p "$logs/db" --quiet "${extra[@]}"
+    sh {} "$tidy" -p "$logs/db" --config-file=.clang-tidy --quiet "${extra[@]}"
+}
+batch() {  # batch SIZE < files: writes batch sources, prints "SOURCE FILE..." lines
+  python3 scripts/lib/tidy_batches.py "$logs/db/compile_commands.json" "$logs/batches" "$1"
+}
+if ((${#to_check[@]})); then
+  printf '%s\n' "${to_check[@]}" | batch "${SWARMDESIGN_TIDY_BATCH:-8}" > "$logs/batches.txt"
+  # A batch whose files do not compile as one (two of them define a helper of the same name)
+  # is split in two and each half checked again, down to single files: its compiler errors
+  # are the batch's, not the files'.
+  while [ -s "$logs/batches.txt" ]; do
+    cut -d' ' -f1 "$logs/batches.txt" | run_tidy
+    while read -r source members; do
+      log="$logs/$(printf %s "$source" | tr / _).log"
+      if [ "$source" != "${members%% *}" ] && grep -qE '\[clang-diagnostic-error\]|Error while processing' "$log"; then
+        echo "tidy: ${members// /, } do not compile as one ($(grep -m1 -oE "error: [^[]*" "$log" || echo "clang-tidy failed")): split" >&2
+        rm -f "$log"
+        n=$(wc -w <<< "$members")
+        printf '%s\n' $members | batch $(((n + 1) / 2))
+      fi
+    done < "$logs/batches.txt" > "$logs/batches.next"
+    mv "$logs/batches.next" "$logs/batches.txt"
+  done
 fi
 elapsed=$((SECONDS - start))
 
