@@ -20,8 +20,6 @@ for arg in "$@"; do
   fi
   args+=("$arg")
 done
-"$ccache" "${args[@]}" || exit
-
 out="" pch=0
 for ((i = 0; i < ${#args[@]}; i++)); do
   case ${args[i]} in
@@ -29,7 +27,14 @@ for ((i = 0; i < ${#args[@]}; i++)); do
     -o) out=${args[i + 1]} ;;
   esac
 done
-[ "$pch" = 1 ] && [ -n "$out" ] || exit 0
+# A precompiled header itself is compiled, never taken from the cache: it names the files it
+# was made from by their absolute paths, and clang refuses one whose files are gone, so a .pch
+# another clone made must not come out of the cache (its key, paths made relative, would match).
+if [ "$pch" = 0 ]; then
+  exec "$ccache" "${args[@]}"
+fi
+"${args[@]}" || exit
+[ -n "$out" ] || exit 0
 
 # The same command, preprocessing only: no -emit-pch, object, dependency file or codegen flags.
 pre=()
