@@ -17,6 +17,10 @@ and fails on any warning (WarningsAsErrors is '*'). Prints one summary line at t
   --jobs N     clang-tidy processes in parallel (default: nproc)
   --tests      also check tests/**/*.cpp
   -h, --help   this text
+
+Files with the same compile command are checked eight at a time, from one source including
+them (SWARMDESIGN_TIDY_BATCH=N changes the size; 1 checks each file alone). A file found clean
+is remembered in ~/.cache/swarmdesign/tidy until it or anything it includes changes.
 EOF
 }
 
