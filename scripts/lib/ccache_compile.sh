@@ -1,6 +1,7 @@
 #!/bin/bash
 # The compiler launcher of every build tree (CMakeLists.txt): ccache_compile.sh ROOT CCACHE
-# COMPILER ARGS... compiles through CCACHE, plus one step after clang makes a precompiled header.
+# COMPILER ARGS... compiles through CCACHE; a precompiled header is compiled directly (below), and
+# clang's gets a path-free digest beside it.
 #
 # Why: clang writes the clone's paths into a .pch, and ccache puts a header's .pch into the key
 # of every file compiled with it, so a second clone of the same sources missed on every file of

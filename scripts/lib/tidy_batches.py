@@ -7,8 +7,8 @@ clang-tidy spends most of a file's time matching its checks over the headers it 
 parses and matches those once. Its diagnostics inside each file are the same as the file's own
 (the checks used here do not depend on which file is the main one; bugprone-suspicious-include
 would flag the batch's own #includes, and the NOLINT on each says it is meant). A batch that does
-not compile as one (two files defining the same helper, say) is checked file by file instead:
-tidy.sh does that when a batch's log holds a compiler error.
+not compile as one (two files defining the same helper, say) is given back to this script by
+tidy.sh, halved (SIZE = half its files), down to single files.
 
 Usage: tidy_batches.py COMPILE_DB BATCH_DIR SIZE < files
 Adds one database entry per batch to COMPILE_DB and prints one line per batch:
@@ -45,7 +45,7 @@ def main() -> int:
         if key not in groups:
             groups[key] = []
             order.append(key)
-        groups[key].append((name, entry))
+        groups[key].append((name, entry, os.path.realpath(name)))
 
     os.makedirs(batch_dir, exist_ok=True)
     for key in order:
@@ -57,12 +57,11 @@ def main() -> int:
                 continue
             source = os.path.join(batch_dir, f"batch_{len(entries)}.cpp")
             with open(source, "w", encoding="utf-8") as out:
-                for _, entry in chunk:
-                    path = os.path.realpath(os.path.join(entry.get("directory", "."), entry["file"]))
+                for _, _, path in chunk:
                     out.write(f'#include "{path}"  // NOLINT(bugprone-suspicious-include)\n')
             first = chunk[0][1]
             entries.append(dict(first, file=source, command=first["command"].replace(first["file"], source)))
-            print(source + " " + " ".join(name for name, _ in chunk))
+            print(source + " " + " ".join(name for name, _, _ in chunk))
     with open(database, "w", encoding="utf-8") as f:
         json.dump(entries, f)
     return 0
