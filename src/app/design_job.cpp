@@ -75,14 +75,7 @@ const design::MethodInfo& search_method(std::string_view name) {
   return *method;
 }
 
-std::string search_method_names() {
-  std::vector<std::string_view> names;
-  for (const design::MethodInfo* m : design::kMethods)
-    if (m->has_design_space) names.push_back(m->name);
-  std::string text;
-  for (std::size_t i = 0; i < names.size(); ++i) text += std::string(i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + std::string(names[i]);
-  return text;
-}
+std::string search_method_names() { return design::method_names_text(/*design_space_only=*/true); }
 
 design::DesignSpaceChoice resolve_space(const design::DesignSpaceRequest& request) {
   try {

@@ -32,7 +32,8 @@ inline constexpr std::array<const MethodInfo*, 4> kMethods{&kAutoMoDe, &kRandomS
 
 /// The method of that name, or nullptr.
 const MethodInfo* find_method(std::string_view name);
-/// "automode or evostick", for messages.
-std::string method_names_text();
+/// "automode, random-search, local-search or evostick", for messages; only the methods over
+/// the modular design space (MethodInfo::has_design_space) when asked.
+std::string method_names_text(bool design_space_only = false);
 
 }  // namespace sd::design

@@ -1,7 +1,9 @@
 // The registry of design methods: every name design/methods.hpp lists has an implementation,
-// an unknown name is refused as a malformed request, and each method rounds its budget its way.
+// an unknown name is refused as a malformed request (naming the methods it could be), and each
+// method rounds its budget its way.
 #include <gtest/gtest.h>
 
+#include "app/design_job.hpp"
 #include "app/design_method.hpp"
 #include "app/errors.hpp"
 
@@ -12,6 +14,17 @@ TEST(DesignMethods, EveryListedNameHasItsMethodAndAnUnknownNameIsRefused) {
   for (const design::MethodInfo* info : design::kMethods)
     EXPECT_EQ(&app::design_method(info->name).info(), info) << info->name;
   EXPECT_THROW(app::design_method("simulated-annealing"), app::InvalidRequest);
+}
+
+TEST(DesignMethods, TheNamesInMessagesAreEveryMethodOrOnlyTheSearchesOfTheDesignSpace) {
+  EXPECT_EQ(design::method_names_text(), "automode, random-search, local-search or evostick");
+  EXPECT_EQ(app::search_method_names(), "automode, random-search or local-search");
+  try {
+    app::search_method("evostick");  // a method, but not one over the modular space
+    ADD_FAILURE() << "evostick accepted as a search of the design space";
+  } catch (const app::InvalidRequest& e) {
+    EXPECT_NE(std::string(e.what()).find("(automode, random-search or local-search)"), std::string::npos) << e.what();
+  }
 }
 
 TEST(DesignMethods, EachMethodRoundsABudgetItsWay) {
