@@ -73,11 +73,20 @@ nlohmann::json assess_design_folder(const std::filesystem::path& folder, const M
 
 std::optional<nlohmann::json> read_design_assessment(const std::filesystem::path& folder) {
   const auto file = design_assessment_file(folder);
-  if (!std::filesystem::exists(file)) return std::nullopt;
+  std::error_code ec;
+  if (!std::filesystem::exists(std::filesystem::symlink_status(file, ec))) return std::nullopt;
+  // The server reads this file on its own, so it is confined as a file a user names: a link
+  // planted at its name (symbolic, out of the folder, or hard, a second name of a file from
+  // elsewhere) is not served.
+  const std::filesystem::path real_folder = std::filesystem::canonical(folder, ec);
+  const PathRule inside_the_folder = [&](const std::filesystem::path& real) { return !ec && real.parent_path() == real_folder; };
   try {
-    return nlohmann::json::parse(read_bounded_file(file.string(), "assessment file", std::size_t{64} << 20).text);
+    return nlohmann::json::parse(read_bounded_file(file.string(), "assessment file", std::size_t{64} << 20, inside_the_folder).text);
   } catch (const nlohmann::json::exception&) {
-    throw std::runtime_error("the assessment of " + folder.string() + " cannot be read");
+    throw std::runtime_error("the design's assessment.json cannot be read: it is not JSON");
+  } catch (const FileReadError& e) {
+    throw std::runtime_error(e.problem == FileProblem::Outside ? "the design's assessment.json is a link; it is not read"
+                                                                : "the design's assessment.json cannot be read");
   }
 }
 

@@ -22,8 +22,11 @@ bool is_catalogue_word(const std::string& name) {
 }  // namespace
 
 FileScope FileScope::own_projects(const Home& home, const storage::User& user) {
+  // Links are resolved in the home's own path (where an administrator put it), never below it:
+  // a link planted at users/<name>/projects would otherwise move the scope to its target. Left
+  // as named, such a link leads outside the scope, and allows() refuses what lies behind it.
   // weakly: a user without a project has no folder yet, and so can name no file.
-  return FileScope(std::filesystem::weakly_canonical(home.folder() / storage::Workspace::projects_folder(user)));
+  return FileScope(std::filesystem::weakly_canonical(home.folder()) / storage::Workspace::projects_folder(user));
 }
 
 bool FileScope::allows(const std::filesystem::path& path) const {

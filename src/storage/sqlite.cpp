@@ -1,5 +1,7 @@
 #include "storage/sqlite.hpp"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <chrono>
 #include <thread>
@@ -36,6 +38,23 @@ void switch_to_wal(sqlite3* db) {
     pause = std::min(pause * 2, std::chrono::milliseconds(50));
   }
 }
+/// The folder of `file` with every link resolved (as given when it cannot be resolved: SQLite
+/// then says why it cannot open the file).
+std::filesystem::path real_folder(const std::filesystem::path& file) {
+  std::error_code ec;
+  const std::filesystem::path folder = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
+  std::filesystem::path real = std::filesystem::canonical(folder, ec);
+  return ec ? folder : real;
+}
+
+void refuse_a_second_name(const std::filesystem::path& file) {
+  struct stat st {};
+  if (::lstat(file.c_str(), &st) != 0) return;  // missing: SQLite says so (or creates it)
+  if (S_ISLNK(st.st_mode)) throw DatabaseError("cannot open database " + file.string() + ": it is a symbolic link");
+  if (S_ISREG(st.st_mode) && st.st_nlink > 1)
+    throw DatabaseError("cannot open database " + file.string() + ": the file has another name (a hard link)");
+}
+
 }  // namespace
 
 Database::Database(const std::filesystem::path& path, bool create) : path_(path) {
@@ -43,8 +62,14 @@ Database::Database(const std::filesystem::path& path, bool create) : path_(path)
   // A database this opens anew is its owner's alone (0600, and so are its -wal and -shm files),
   // whatever the umask and whichever front end creates it: the home's, a design's design.db.
   if (create) create_private_file(path);
-  const int flags = SQLITE_OPEN_READWRITE | (create ? SQLITE_OPEN_CREATE : 0) | SQLITE_OPEN_FULLMUTEX;
-  if (sqlite3_open_v2(path.c_str(), &db_, flags, nullptr) != SQLITE_OK) {
+  // The file itself, never what a link planted at its name leads to (a design.db linked to
+  // another user's): the folder's own path may go through links, the file's name may not
+  // (SQLITE_OPEN_NOFOLLOW refuses a link anywhere in the name it is given), and a file with a
+  // second name (a hard link, which may be another account's database) is not opened.
+  const std::filesystem::path file = real_folder(path) / path.filename();
+  refuse_a_second_name(file);
+  const int flags = SQLITE_OPEN_READWRITE | (create ? SQLITE_OPEN_CREATE : 0) | SQLITE_OPEN_FULLMUTEX | SQLITE_OPEN_NOFOLLOW;
+  if (sqlite3_open_v2(file.c_str(), &db_, flags, nullptr) != SQLITE_OK) {
     const std::string message = "cannot open database " + path.string();
     std::string detail = db_ ? sqlite3_errmsg(db_) : "out of memory";
     sqlite3_close(db_);

@@ -1,7 +1,8 @@
 // A mission a user keeps on a shared server may name an Arlequin module-set folder: as an
 // attacker would, it names another account's folder (absolute and by ".."), a folder of
 // devices, and a folder of its own with a weight document linked to another account's. Each is
-// refused with the words a missing folder gets; the user's own folder is read.
+// refused with the words a missing folder gets; the user's own folder is read. A link planted
+// as a user's projects folder does not move their scope to its target.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <unistd.h>
@@ -93,6 +94,24 @@ TEST_F(ModuleSetScope, AWeightDocumentLinkedOutIsNotRead) {
   // The CLI on one's own machine follows the link, as it follows any path the user types.
   fs::create_symlink(bob_projects_ / "q" / "set" / "stop.json", own);
   EXPECT_NE(load_requested_mission(mission_naming("set").string(), FileScope::local()).arlequin_modules, nullptr);
+}
+
+TEST_F(ModuleSetScope, ALinkPlantedAsAUsersProjectsFolderDoesNotMoveTheirScope) {
+  // Someone with write access to the home replaces Carol's projects folder by a link to Bob's:
+  // Carol's scope stays where her folder should be, so Bob's files are not hers through it.
+  const storage::User carol{3, "carol", 0};
+  const fs::path carols = home_ / storage::Workspace::projects_folder(carol);
+  fs::create_directories(carols.parent_path());
+  fs::create_symlink(bob_projects_, carols);
+  const FileScope scope = FileScope::own_projects(Home(home_), carol);
+  EXPECT_FALSE(scope.allows(carols / "q" / "set" / "stop.json"));
+  EXPECT_FALSE(scope.allows(bob_projects_ / "q" / "set" / "stop.json"));
+  EXPECT_THROW(scope.read((carols / "q" / "set" / "stop.json").string(), "weight document"), NotFound);
+  // Without the link, her own folder is hers.
+  fs::remove(carols);
+  fs::create_directories(carols / "r");
+  std::ofstream(carols / "r" / "notes.txt") << "mine";
+  EXPECT_EQ(scope.read((carols / "r" / "notes.txt").string(), "notes"), "mine");
 }
 
 }  // namespace
