@@ -323,7 +323,7 @@ TEST_F(WebSecurity, SignInTakesAsLongForAnUnknownNameAsForAWrongPassword) {
 }
 
 TEST_F(WebSecurity, RepeatedFailuresLockANameKnownOrNotThenARightPasswordWorksAgain) {
-  serve({.failures_before_lockout = 3, .lockout = std::chrono::seconds(2), .failures_per_address = 1000});
+  serve({.failures_before_lockout = 3, .lockout = std::chrono::seconds(3), .failures_per_address = 1000});
   WebClient guesser(server_->port());
   const auto sign_in = [&](const std::string& name, const std::string& password) {
     return guesser.raw().Post("/api/sign-in", json{{"name", name}, {"password", password}}.dump(), "application/json");
@@ -334,11 +334,11 @@ TEST_F(WebSecurity, RepeatedFailuresLockANameKnownOrNotThenARightPasswordWorksAg
     EXPECT_EQ(locked->status, 429) << name << ": even the right password waits out the lock";
     const int wait = std::stoi(locked->get_header_value("Retry-After"));
     EXPECT_GE(wait, 1);
-    EXPECT_LE(wait, 2);
+    EXPECT_LE(wait, 3);
     EXPECT_NE(json::parse(locked->body).at("error").get<std::string>().find("try again in"), std::string::npos);
-  }
-  // The CLI of the same home shares the count.
-  {
+    if (name != "alice") continue;
+    // The CLI of the same home shares the count (asked at once: a loaded machine once took
+    // longer than the lock over "nobody"'s guesses, each an Argon2id hash).
     app::Home home(root_ / "home");
     EXPECT_THROW(app::sign_in_here(home, "alice", "alice-password"), app::TooManyAttempts);
   }
