@@ -32,6 +32,9 @@ configure() {  # configure <dir> <cmake args...>
 #                parts (designs, leases, reports) run in the workflow and app tests
 #   calibration  simulates the ARGoS reference controllers' runs, ~1 min in Release; the same
 #                simulator code runs in every unit test of simulator/, modules/, evaluation/
+#   interop      the real irace (R) starting the binary 300 times; irace's strings are parsed
+#                in-process by a unit test here, and fuzzed
+#   cross_cpu    glibc's FMA vs SSE2 paths: a property of the GCC Release binary users run
 asan() {
   stage "ASan+UBSan build (build-asan)"
   configure build-asan -DSWARMDESIGN_SANITIZE=address,undefined -DSWARMDESIGN_FUZZ=ON \

@@ -14,7 +14,7 @@
 #   TEST_PACKAGES
 # Installing them starts no service, and the ones it installs stay disabled: the cluster
 # tests start their own Slurm and sshd on private ports and stop them.
-# Other kinds by label: ctest --test-dir build -L unit|workflow|cluster|calibration|slow|browser|python|package
+# Other kinds by label: ctest --test-dir build -L unit|workflow|cluster|calibration|slow|interop|cross_cpu|browser|python|package
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/lib/stages.sh

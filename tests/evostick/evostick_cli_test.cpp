@@ -136,7 +136,7 @@ TEST(EvoStickCli, AKilledEvolutionResumesFromItsStateFileAndEndsAsAnUninterrupte
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   const std::string state = (dir / "run.evostick").string();
-  const std::string settings = "evostick --mission aac --generations 14 --population 6 --evaluations 2 --elites 2 --seed 5";
+  const std::string settings = "evostick --mission aac --generations 8 --population 6 --evaluations 2 --elites 2 --seed 5";
   const auto whole = run(settings + " --json");
   ASSERT_EQ(whole.exit_code, 0) << whole.err;
 
@@ -148,17 +148,17 @@ TEST(EvoStickCli, AKilledEvolutionResumesFromItsStateFileAndEndsAsAnUninterrupte
   std::vector<std::string> args;
   std::istringstream words(settings + " --json --state " + state);
   for (std::string w; words >> w;) args.push_back(w);
-  // The evolution SIGKILLs itself right after generation 5 is in its state file.
-  const int pid = test::start_swarmdesign(args, {{{"SWARMDESIGN_KILL_AT_CHECKPOINT", "5"}}, {}},
+  // The evolution SIGKILLs itself right after generation 4 is in its state file.
+  const int pid = test::start_swarmdesign(args, {{{"SWARMDESIGN_KILL_AT_CHECKPOINT", "4"}}, {}},
                                           (dir / "out").string(), (dir / "err").string());
   EXPECT_EQ(test::wait_swarmdesign(pid), -1) << "the evolution ended before it could be killed";
   const int killed_at = saved_generation();
-  ASSERT_EQ(killed_at, 5);
+  ASSERT_EQ(killed_at, 4);
 
   const auto resumed = run("evostick --resume " + state + " --json");
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
   EXPECT_EQ(resumed.out, whole.out) << "killed after generation " << killed_at;
-  EXPECT_EQ(saved_generation(), 13) << "the state is kept on while resuming";
+  EXPECT_EQ(saved_generation(), 7) << "the state is kept on while resuming";
 
   // A state file is never silently overwritten, nor resumed with other settings.
   const auto again = run(settings + " --state " + state);

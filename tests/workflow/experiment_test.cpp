@@ -1,5 +1,5 @@
 // Experiments through the real binary: the scaled-down protocol (two missions, budget
-// scale 0.01, two designs per condition) killed once and resumed to the same report as an
+// scale 0.007, two designs per condition) killed once and resumed to the same report as an
 // uninterrupted run; designs another experiment already made are reused; --dry-run; and
 // protocols that must be refused before anything is stored.
 #include <gtest/gtest.h>
@@ -48,7 +48,7 @@ json results(const json& report) {
 TEST_F(experiment, ScaledDownProtocolKilledOnceResumesToTheSameResults) {
   user_with_active_project("alice", "killed");
   const std::vector<std::string> command = {"experiment", "combination", "--missions", "aac,foraging",
-                                            "--budget-scale", "0.01", "--designs", "2", "--eval-seeds", "3",
+                                            "--budget-scale", "0.007", "--designs", "2", "--eval-seeds", "3",
                                             "--threads", "2"};
   // Killed at the 60th race step of the process: inside the experiment, not at its start.
   kill_at_checkpoint(60);
