@@ -47,12 +47,14 @@ class Evaluator {
   virtual int workers() const = 0;
   /// While `flag` is set and raised, a batch stops between two runs and evaluate() throws
   /// EvaluationStopped, so a cancel is heard within one run rather than one batch (a race step
-  /// at a large budget is a minute). A backend that cannot stop mid-batch (MPI) ignores it:
-  /// its caller's check between batches stops it. nullptr: no flag.
+  /// at a large budget is a minute). On MPI ranks, between two chunks of a few runs. nullptr:
+  /// no flag.
   void stop_when(const std::atomic<bool>* flag) { stop_ = flag; }
 
  protected:
   bool stop_requested() const { return stop_ != nullptr && stop_->load(std::memory_order_relaxed); }
+  /// For a backend that hands batches on to another evaluator (MPI's rank 0 to its threads).
+  const std::atomic<bool>* stop_flag() const { return stop_; }
 
  private:
   const std::atomic<bool>* stop_ = nullptr;

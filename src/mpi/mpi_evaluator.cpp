@@ -103,6 +103,7 @@ void MpiEvaluator::share_mission(const Mission& mission) {
 }
 
 void MpiEvaluator::evaluate(const Mission& mission, std::span<const EvaluationTask> tasks, std::span<double> scores) {
+  local_.stop_when(stop_flag());  // rank 0's own runs stop as the threaded ones do
   // A mission that was not read from a document cannot be rebuilt by another rank.
   if (session_.size() < 2 || mission.document.empty() || tasks.empty()) {
     local_.evaluate(mission, tasks, scores);
@@ -146,8 +147,13 @@ void MpiEvaluator::evaluate(const Mission& mission, std::span<const EvaluationTa
       if (round == 0 || tasks.size() - next > share_here) hand_out(r);
 
   std::string failure;
+  // A stop (a cancel) is a failure that is no one's: no more work goes out, the chunks out (a
+  // few runs each) are collected, and the batch is void (EvaluationStopped).
+  bool stopped = false;
+  const auto handing_out = [&] { return next < tasks.size() && failure.empty() && !stopped; };
   auto idle = std::chrono::microseconds(5);
   while (finished < tasks.size()) {
+    stopped = stopped || stop_requested();
     MPI_Status status;
     int arrived = 0;
     MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, session_.comm(), &arrived, &status);
@@ -178,16 +184,21 @@ void MpiEvaluator::evaluate(const Mission& mission, std::span<const EvaluationTa
       }
       finished += count;
       runs_by_rank_[static_cast<std::size_t>(rank)] += static_cast<std::int64_t>(count);
-      if (next < tasks.size() && failure.empty()) hand_out(rank);
+      if (handing_out()) hand_out(rank);
       complete_sends(false);
       continue;
     }
-    if (!failure.empty() && std::all_of(in_flight.begin(), in_flight.end(), [](int n) { return n == 0; })) break;
-    if (next < tasks.size() && failure.empty()) {
+    if ((!failure.empty() || stopped) && std::all_of(in_flight.begin(), in_flight.end(), [](int n) { return n == 0; })) break;
+    if (handing_out()) {
       // Nothing to collect: rank 0 evaluates a chunk of its own, one run per thread.
       const std::size_t count = std::min<std::size_t>(static_cast<std::size_t>(width_[0]), tasks.size() - next);
       const auto local_start = std::chrono::steady_clock::now();
-      local_.evaluate(mission, tasks.subspan(next, count), scores.subspan(next, count));
+      try {
+        local_.evaluate(mission, tasks.subspan(next, count), scores.subspan(next, count));
+      } catch (const EvaluationStopped&) {
+        stopped = true;  // raised during rank 0's chunk: its runs are void, the ranks' are collected
+        continue;
+      }
       local_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - local_start).count();
       next += count;
       finished += count;
@@ -200,6 +211,7 @@ void MpiEvaluator::evaluate(const Mission& mission, std::span<const EvaluationTa
   complete_sends(true);
   evaluate_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (!failure.empty()) throw std::runtime_error("evaluation failed on " + failure);
+  if (finished < tasks.size()) throw EvaluationStopped();
 }
 
 }  // namespace sd::mpi
