@@ -5,9 +5,9 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
-#include <system_error>
 
 #include "app/errors.hpp"
+#include "app/quotas.hpp"
 #include "storage/errors.hpp"
 #include "storage/folder_removal.hpp"
 #include "storage/session_file.hpp"
@@ -16,17 +16,8 @@
 
 namespace sd::app {
 
-namespace fs = std::filesystem;
 
 namespace {
-
-std::uint64_t disk_use(const fs::path& folder) {
-  std::uint64_t bytes = 0;
-  std::error_code ec;
-  for (auto it = fs::recursive_directory_iterator(folder, ec); !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
-    if (it->symlink_status(ec).type() == fs::file_type::regular) bytes += it->file_size(ec);
-  return bytes;
-}
 
 int count(storage::Database& db, const char* sql, std::int64_t user_id) {
   storage::Statement q = db.prepare(sql);
@@ -76,7 +67,8 @@ std::vector<AccountUse> account_uses(Home& home, const storage::User& admin) {
   std::vector<AccountUse> out;
   for (storage::AccountRow& row : storage::account_rows(db)) {
     AccountUse use;
-    use.disk_bytes = disk_use(home.workspace().resolve(storage::Workspace::projects_folder(row.user)).parent_path());
+    use.quota = quota_use(home, row.user);
+    use.disk_bytes = use.quota.disk_bytes;
     use.running_designs = running_designs(db, row.user.id);
     use.running_experiments = running_experiments(db, row.user.id);
     use.account = std::move(row);
@@ -143,7 +135,8 @@ nlohmann::json accounts_document(const std::vector<AccountUse>& accounts) {
                     {"last_sign_in", a.account.last_sign_in ? nlohmann::json(*a.account.last_sign_in) : nlohmann::json()},
                     {"disk_bytes", a.disk_bytes},
                     {"running_designs", a.running_designs},
-                    {"running_experiments", a.running_experiments}});
+                    {"running_experiments", a.running_experiments},
+                    {"quota", quota_document(a.quota)}});
   return list;
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/home.hpp"
+#include "app/quotas.hpp"
 #include "storage/account_admin.hpp"
 
 namespace sd::app {
@@ -19,6 +20,7 @@ struct AccountUse {
   storage::AccountRow account;
   std::uint64_t disk_bytes = 0;  // everything under the account's folder (links not followed)
   int running_designs = 0, running_experiments = 0;
+  QuotaUse quota;
 };
 
 /// AccessDenied unless `who` is an administrator.

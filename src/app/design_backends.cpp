@@ -5,6 +5,7 @@
 #include "app/experiment_job.hpp"
 #include "app/local_processes.hpp"
 #include "app/projects.hpp"
+#include "app/quotas.hpp"
 #include "storage/design_store.hpp"
 #include "storage/lease.hpp"
 
@@ -48,7 +49,16 @@ DesignBackend& backend_for(const storage::Project& project, DesignBackend* serve
 }
 
 StartedDesign start_design(Home& home, const storage::User& user, const DesignLaunch& launch, DesignBackend* server) {
-  return backend_for(project_or_active(home, user, launch.design.project), server).start(home, user, launch);
+  const storage::Project project = project_or_active(home, user, launch.design.project);
+  require_disk_room(home, user);
+  // The budget is reserved for a new design; an interrupted one that resumes had its runs
+  // reserved when it began (and a start that resumes after all gives them back below).
+  const auto latest = storage::Designs(home.workspace(), project).latest();
+  const bool resumes = latest && latest->state == storage::DesignState::interrupted && !launch.design.fresh;
+  RunReservation runs(home, user, resumes ? 0 : project.budget.value_or(0), "this design");
+  StartedDesign started = backend_for(project, server).start(home, user, launch);
+  if (!started.resumed) runs.keep();
+  return started;
 }
 
 StoppedDesign stop_design(Home& home, const storage::User& user, const std::optional<std::string>& name,

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "app/errors.hpp"
+#include "app/quotas.hpp"
 #include "app/projects.hpp"
 #include "storage/clock.hpp"
 #include "storage/lease.hpp"
@@ -88,7 +89,14 @@ LaunchedExperiment launch_experiment(Home& home, const storage::User& user, cons
                                      ExperimentBackend* server) {
   const storage::Project project = project_or_active(home, user, launch.project);
   PlannedExperiment plan = plan_requested_experiment(launch.protocol, launch.files);
-  return experiment_backend_for(project, server).start(home, user, project, launch, std::move(plan));
+  require_disk_room(home, user);
+  // Its whole plan is reserved when it begins; one of that name exists already: it resumes
+  // (or has finished), reserving nothing more.
+  const bool exists = storage::Experiments(home.workspace(), project).find(plan.protocol.name).has_value();
+  RunReservation runs(home, user, exists ? 0 : plan.design_runs + plan.assessment_runs, "this experiment");
+  LaunchedExperiment launched = experiment_backend_for(project, server).start(home, user, project, launch, std::move(plan));
+  if (!launched.started.resumed) runs.keep();
+  return launched;
 }
 
 std::string stop_experiment(Home& home, const storage::User& user, const std::string& project, const std::string& name,

@@ -4,6 +4,7 @@
 #include <regex>
 
 #include "app/errors.hpp"
+#include "app/quotas.hpp"
 #include "app/user_files.hpp"
 #include "control/config_string.hpp"
 #include "core/bounded_file.hpp"
@@ -56,6 +57,7 @@ ProjectMission save_project_mission(Home& home, const storage::User& user, const
   const auto folder = FileScope::own_projects(home, user).writable_folder(folder_of(home, user, project),
                                                                           "the project's missions folder");
   const auto file = folder / (name + ".json");
+  require_room_for_file(home, user, file, text.size());
   replace_file_durably(file, text, 0600, Umask::Applies);
   return {name, file};
 }

@@ -5,6 +5,7 @@
 #include <regex>
 
 #include "app/errors.hpp"
+#include "app/quotas.hpp"
 #include "app/user_files.hpp"
 #include "control/config_string.hpp"
 #include "core/durable_file.hpp"
@@ -51,6 +52,7 @@ SavedSoftware save_software(Home& home, const storage::User& user, const std::st
   SavedSoftware saved{name, to_config_string(parse_control_software(text))};
   const auto folder = FileScope::own_projects(home, user).writable_folder(folder_of(home, user, project),
                                                                           "the folder of saved control software");
+  require_room_for_file(home, user, folder / (name + ".txt"), saved.text.size());
   replace_file_durably(folder / (name + ".txt"), saved.text, 0644, Umask::Applies);
   return saved;
 }

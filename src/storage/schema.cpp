@@ -233,6 +233,25 @@ UPDATE sqlite_master SET sql = replace(sql, 'CHECK (method IN (''automode'', ''e
   WHERE type = 'table' AND name = 'experiment_designs';
 PRAGMA writable_schema = OFF;
 )sql",
+    // 10: quotas (issue #56). An account's own limits (NULL: the server's default applies; -1:
+    // no limit for it), the server's default (one row; NULL: no limit), and the simulation runs
+    // each account reserved per UTC day (a design's budget, an experiment's plan).
+    R"sql(
+ALTER TABLE users ADD COLUMN quota_disk_bytes INTEGER CHECK (quota_disk_bytes >= -1);
+ALTER TABLE users ADD COLUMN quota_runs_per_day INTEGER CHECK (quota_runs_per_day >= -1);
+CREATE TABLE server_quota (
+  id           INTEGER PRIMARY KEY CHECK (id = 1),
+  disk_bytes   INTEGER CHECK (disk_bytes >= 0),
+  runs_per_day INTEGER CHECK (runs_per_day >= 0)
+);
+INSERT INTO server_quota (id) VALUES (1);
+CREATE TABLE run_use (
+  user_id INTEGER NOT NULL REFERENCES users(id) ON DELETE CASCADE,
+  day     INTEGER NOT NULL,  -- Unix seconds / 86400: the UTC day
+  runs    INTEGER NOT NULL CHECK (runs >= 0),
+  PRIMARY KEY (user_id, day)
+);
+)sql",
 };
 
 }  // namespace
