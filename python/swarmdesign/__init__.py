@@ -633,6 +633,11 @@ class Account:
     def projects(self) -> Any:
         return _core.account_projects(self.home)
 
+    def quota(self) -> Any:
+        """What the account uses of the quotas an administrator set (``quota --json``): disk
+        bytes and runs reserved today (UTC), each with its limit (None: no limit)."""
+        return _core.account_quota(self.home)
+
     def new_project(self, name: str, mission: MissionLike, budget: Union[int, str]) -> Any:
         """Makes a project with its mission (a catalogue name or a mission file) and budget, and
         makes it the active one, as ``new-project``, ``set-mission`` and ``set-budget`` do; every

@@ -1,4 +1,4 @@
-// Accounts: sign-up, sign-in, exit, show-users (thesis spellings as aliases).
+// Accounts: sign-up, sign-in, exit, show-users (thesis spellings as aliases), change-password, quota.
 #include <nlohmann/json.hpp>
 #include <CLI/CLI.hpp>
 #include <signal.h>
@@ -12,6 +12,7 @@
 #include "app/account_admin.hpp"
 #include "app/accounts.hpp"
 #include "app/documents.hpp"
+#include "app/quotas.hpp"
 #include "cli/command_registry.hpp"
 #include "storage/clock.hpp"
 #include "storage/passwords.hpp"
@@ -162,6 +163,14 @@ void show_users(const AccountOptions& options) {
   if (list.me) std::cout << "(* signed in)\n";
 }
 
+void show_quota(const AccountOptions& options) {
+  app::Home home;
+  const storage::User user = app::signed_in_user(home);
+  const app::QuotaUse use = app::quota_use(home, user);
+  if (options.json) std::cout << app::quota_document(use).dump(2) << '\n';
+  else std::cout << user.name << ": " << app::quota_text(use) << "\n";
+}
+
 const std::string kPasswordHelp =
     "The password is read from the terminal without echo, or as one line of standard input "
     "with --password-stdin.";
@@ -199,6 +208,14 @@ CommandRegistrar registrar{10, [](CLI::App& app, Context&) {
   auto* exit_command = app.add_subcommand("exit", "Sign out: end the session and delete its token");
   exit_command->footer("Example:\n  swarmdesign exit");
   exit_command->callback([] { sign_out(); });
+
+  auto* quota_command = app.add_subcommand("quota", "What your account uses of its quotas: disk and runs per day");
+  quota_command->add_flag("--json", options->json, "print one JSON document");
+  quota_command->footer("An administrator sets them (swarmdesign admin quota). A design reserves its budget when it starts,\n"
+                        "an experiment its whole plan; a resumed one reserves nothing more. Work that would pass a\n"
+                        "limit, and a file that would pass the disk limit, is refused before anything is written.\n\n"
+                        "Example:\n  swarmdesign quota");
+  quota_command->callback([options] { show_quota(*options); });
 
   auto* show_users_command = app.add_subcommand("show-users", "List the user names (* marks you)");
   show_users_command->alias("showUsers");

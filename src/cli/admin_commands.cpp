@@ -1,4 +1,4 @@
-// Running a lab's home (issue #56): `admin backup`, `admin restore` and `admin check`. Whoever
+// Running a lab's home (issue #56): accounts, quotas, `admin backup`, `admin restore` and `admin check`. Whoever
 // runs them owns the home's files (0700): on a shared server, its administrator's Unix account.
 // The work is the application layer's (app/home_backup); this file parses and prints.
 #include <CLI/CLI.hpp>
@@ -16,6 +16,8 @@
 #include "core/home.hpp"
 #include "app/account_admin.hpp"
 #include "app/accounts.hpp"
+#include "app/quotas.hpp"
+#include "storage/account_admin.hpp"
 #include "storage/clock.hpp"
 
 #include <unistd.h>
@@ -24,8 +26,8 @@ namespace sd::cli::admin_commands {
 namespace {
 
 struct Options {
-  std::string file, into, name, role;
-  bool json = false, yes = false;
+  std::string file, into, name, role, disk, runs;
+  bool json = false, yes = false, server_default = false;
 };
 
 std::string megabytes(std::uint64_t bytes) {
@@ -43,11 +45,22 @@ void users(const Options& o) {
     std::cout << list.dump(2) << "\n";
     return;
   }
-  std::printf("%-20s %-6s %-9s %10s %8s  %s\n", "ACCOUNT", "ROLE", "STATE", "DISK", "RUNNING", "LAST SIGN-IN");
-  for (const auto& a : list)
-    std::printf("%-20s %-6s %-9s %10s %8d  %s\n", a["name"].get<std::string>().c_str(), a["role"].get<std::string>().c_str(),
-                a["disabled"].get<bool>() ? "disabled" : "active", megabytes(a["disk_bytes"].get<std::uint64_t>()).c_str(),
+  // Quota columns: use of limit ("-": no limit).
+  const auto of = [](const std::string& used, const nlohmann::json& limit, auto text) {
+    return used + " / " + (limit.is_null() ? std::string("-") : text(limit.get<std::int64_t>()));
+  };
+  const auto mb = [](std::int64_t b) { return megabytes(static_cast<std::uint64_t>(b)); };
+  const auto number = [](std::int64_t n) { return std::to_string(n); };
+  std::printf("%-20s %-6s %-9s %21s %19s %8s  %s\n", "ACCOUNT", "ROLE", "STATE", "DISK / QUOTA", "RUNS TODAY / QUOTA",
+              "RUNNING", "LAST SIGN-IN");
+  for (const auto& a : list) {
+    const nlohmann::json& q = a["quota"];
+    std::printf("%-20s %-6s %-9s %21s %19s %8d  %s\n", a["name"].get<std::string>().c_str(), a["role"].get<std::string>().c_str(),
+                a["disabled"].get<bool>() ? "disabled" : "active",
+                of(megabytes(a["disk_bytes"].get<std::uint64_t>()), q["disk_limit"], mb).c_str(),
+                of(std::to_string(q["runs_today"].get<std::int64_t>()), q["runs_per_day"], number).c_str(),
                 a["running_designs"].get<int>() + a["running_experiments"].get<int>(), when(a["last_sign_in"]).c_str());
+  }
 }
 
 void set_disabled(const Options& o, bool disabled) {
@@ -86,6 +99,40 @@ void delete_user(const Options& o) {
   }
   app::delete_account(home, admin, o.name, confirmation);
   std::cout << "Deleted account " << o.name << " and everything it owned.\n";
+}
+
+// `admin quota`: the server's default (--default) or an account's; shown, then changed by
+// whichever of --disk and --runs-per-day is given.
+void quota(const Options& o) {
+  app::Home home;
+  const storage::User admin = app::signed_in_user(home);
+  if (o.server_default == !o.name.empty()) throw UsageError("name an account or give --default, not both or neither");
+  if (o.server_default) {
+    storage::QuotaLimits limits = app::server_quota(home, admin);
+    const auto limit = [](const std::string& text, auto parse) -> std::optional<std::int64_t> {
+      if (text == "none") return std::nullopt;
+      return parse(text);
+    };
+    if (!o.disk.empty()) limits.disk_bytes = limit(o.disk, app::parse_disk_bytes);
+    if (!o.runs.empty()) limits.runs_per_day = limit(o.runs, app::parse_runs);
+    if (!o.disk.empty() || !o.runs.empty()) app::set_server_quota(home, admin, limits);
+    if (o.json) {
+      std::cout << app::limits_document(limits).dump(2) << "\n";
+      return;
+    }
+    std::cout << "Server default: disk " << (limits.disk_bytes ? app::bytes_text(static_cast<std::uint64_t>(*limits.disk_bytes)) : "no limit")
+              << "; runs per day " << (limits.runs_per_day ? std::to_string(*limits.runs_per_day) : "no limit") << "\n";
+    return;
+  }
+  const storage::User user = storage::account_row(home.workspace().database(), o.name).user;
+  app::require_admin(home, admin);
+  storage::AccountQuota own = app::quota_use(home, user).own;
+  if (!o.disk.empty()) own.disk_bytes = app::parse_quota_setting(o.disk, app::parse_disk_bytes);
+  if (!o.runs.empty()) own.runs_per_day = app::parse_quota_setting(o.runs, app::parse_runs);
+  if (!o.disk.empty() || !o.runs.empty()) app::set_account_quota(home, admin, o.name, own);
+  const app::QuotaUse use = app::quota_use(home, user);
+  if (o.json) std::cout << nlohmann::json{{"name", o.name}, {"quota", app::quota_document(use)}}.dump(2) << "\n";
+  else std::cout << o.name << ": " << app::quota_text(use) << "\n";
 }
 
 void backup(const Options& o) {
@@ -158,7 +205,8 @@ CommandRegistrar registrar{70, [](CLI::App& app, Context&) {
 
   auto* u = admin->add_subcommand("users", "The accounts: role, state, disk use, running jobs, last sign-in");
   u->add_flag("--json", o->json, "Print one JSON document");
-  u->footer("For administrators (the home's first account, or one made so with `admin role NAME admin`).");
+  u->footer("For administrators (the home's first account, or one made so with `admin role NAME admin`).\n"
+            "Quotas read use / limit (\"-\": no limit); `admin quota` sets them.");
   u->callback([o] { users(*o); });
   auto* d = admin->add_subcommand("disable", "Disable an account: its sessions end and it cannot sign in");
   d->add_option("NAME", o->name, "the account")->required();
@@ -179,6 +227,19 @@ CommandRegistrar registrar{70, [](CLI::App& app, Context&) {
   del->add_flag("--yes", o->yes, "Do not ask for its name again");
   del->footer("Refused while one of its designs or experiments runs. Nothing of another account is touched.");
   del->callback([o] { delete_user(*o); });
+
+  auto* q = admin->add_subcommand("quota", "Show or set an account's quotas, or the server's default");
+  q->add_option("NAME", o->name, "the account (or --default)");
+  q->add_flag("--default", o->server_default, "The server's default, for every account without its own");
+  q->add_option("--disk", o->disk, "Disk limit: a size (500MB, 2GB), none, or default (an account follows the server's)");
+  q->add_option("--runs-per-day", o->runs, "Simulation runs per UTC day: a number, none, or default");
+  q->add_flag("--json", o->json, "Print one JSON document");
+  q->footer("Disk counts every file under the account's folder (designs, experiments, uploads). A design reserves\n"
+            "its budget when it starts, an experiment its whole plan; work or a file that would pass a limit is\n"
+            "refused in one line before anything is written. Users see theirs with `swarmdesign quota`.\n\n"
+            "Examples:\n  swarmdesign admin quota --default --disk 20GB --runs-per-day 2000000\n"
+            "  swarmdesign admin quota alice --disk none\n  swarmdesign admin quota bob --runs-per-day default");
+  q->callback([o] { quota(*o); });
 
   auto* c = admin->add_subcommand("check", "Check the home: databases, folders, links");
   c->add_flag("--json", o->json, "Print one JSON document");

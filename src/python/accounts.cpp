@@ -23,6 +23,7 @@
 #include "app/home.hpp"
 #include "app/projects.hpp"
 #include "app/protocol_requests.hpp"
+#include "app/quotas.hpp"
 #include "app/test_design.hpp"
 #include "python/bindings.hpp"
 #include "python/interruptible.hpp"
@@ -42,6 +43,11 @@ std::unique_ptr<app::Home> open_home(const std::optional<std::string>& folder) {
 py::object projects(const std::optional<std::string>& home_folder) {
   auto home = open_home(home_folder);
   return to_python(app::projects_document(app::list_projects(*home, app::signed_in_user(*home))));
+}
+
+py::object quota(const std::optional<std::string>& home_folder) {
+  auto home = open_home(home_folder);
+  return to_python(app::quota_document(app::quota_use(*home, app::signed_in_user(*home))));
 }
 
 py::object designs(const std::optional<std::string>& home_folder, const std::optional<std::string>& project) {
@@ -231,6 +237,7 @@ void bind_accounts(py::module_& m) {
   m.def("account_delete_project", &delete_project, py::arg("home"), py::arg("name"), py::arg("confirmation"),
         "Deletes a project and everything in it once confirmation repeats its name (`delete-project`).");
   m.def("account_projects", &projects, py::arg("home") = py::none(), "The signed-in user's projects (`projects --json`).");
+  m.def("account_quota", &quota, py::arg("home") = py::none(), "What the account uses of its quotas (`quota --json`).");
   m.def("account_designs", &designs, py::arg("home") = py::none(), py::arg("project") = py::none(),
         "A project's designs, one row each (the active project when none is named).");
   m.def("account_experiments", &experiments, py::arg("home") = py::none(), py::arg("project") = py::none(),

@@ -2,6 +2,7 @@
 #include <chrono>
 
 #include "app/account_admin.hpp"
+#include "app/quotas.hpp"
 #include "app/accounts.hpp"
 #include "app/errors.hpp"
 #include "web/host_check.hpp"
@@ -62,6 +63,9 @@ void add_account_routes(Routes& routes) {
             {"admin", app::is_admin(call.home, call.user)},
             {"csrf", call.context.guard.csrf_token(*SessionGuard::session_token(call.request))}};
   });
+
+  // What the account uses of its quotas (issue #56), shown on the page.
+  routes.get("/api/quota", [](Call& call) { return app::quota_document(app::quota_use(call.home, call.user)); });
 
   // A user's own new password (`change-password`): the current one first; every other session
   // of the account ends, this page's stays.
