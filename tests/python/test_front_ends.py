@@ -152,6 +152,13 @@ def mini_protocol(account, name):
          "conditions": [{"name": "alone", "architectures": ["fsm"], "flavours": ["chocolate"]}]}]})
 
 
+def test_the_quota_is_the_clis_document_with_the_designs_runs_reserved(account):
+    quota = account.quota()
+    assert quota == json.loads(run_cli("quota", "--json"))
+    assert quota["runs_today"] >= 2 * 1100, "the fixture's two designs reserved their budgets"
+    assert quota["disk_bytes"] > 0 and quota["disk_from_default"] and quota["runs_from_default"]
+
+
 def test_an_experiments_plan_is_the_clis_document(account, tmp_path):
     planned = account.plan_experiment("validation", missions=["aac"], designs=3, seed=5, budget_scale=0.01)
     cli = json.loads(run_cli("experiment", "validation", "--missions", "aac", "--designs", 3, "--seed", 5,
