@@ -635,7 +635,7 @@ class Account:
 
     def quota(self) -> Any:
         """What the account uses of the quotas an administrator set (``quota --json``): disk
-        bytes and runs reserved today (UTC), each with its limit (None: no limit)."""
+        bytes and the runs of work started today (UTC), each with its limit (None: no limit)."""
         return _core.account_quota(self.home)
 
     def new_project(self, name: str, mission: MissionLike, budget: Union[int, str]) -> Any:

@@ -51,8 +51,8 @@ DesignBackend& backend_for(const storage::Project& project, DesignBackend* serve
 StartedDesign start_design(Home& home, const storage::User& user, const DesignLaunch& launch, DesignBackend* server) {
   const storage::Project project = project_or_active(home, user, launch.design.project);
   require_disk_room(home, user);
-  // The budget is reserved for a new design; an interrupted one that resumes had its runs
-  // reserved when it began (and a start that resumes after all gives them back below).
+  // A new design counts its budget once started; an interrupted one that resumes counted its
+  // runs when it began (and a start that resumes after all counts nothing below).
   const auto latest = storage::Designs(home.workspace(), project).latest();
   const bool resumes = latest && latest->state == storage::DesignState::interrupted && !launch.design.fresh;
   RunReservation runs(home, user, resumes ? 0 : project.budget.value_or(0), "this design");

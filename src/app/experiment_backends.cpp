@@ -90,8 +90,8 @@ LaunchedExperiment launch_experiment(Home& home, const storage::User& user, cons
   const storage::Project project = project_or_active(home, user, launch.project);
   PlannedExperiment plan = plan_requested_experiment(launch.protocol, launch.files);
   require_disk_room(home, user);
-  // Its whole plan is reserved when it begins; one of that name exists already: it resumes
-  // (or has finished), reserving nothing more.
+  // Its whole plan counts when it begins; one of that name exists already: it resumes (or has
+  // finished), counting nothing more.
   const bool exists = storage::Experiments(home.workspace(), project).find(plan.protocol.name).has_value();
   RunReservation runs(home, user, exists ? 0 : plan.design_runs + plan.assessment_runs, "this experiment");
   LaunchedExperiment launched = experiment_backend_for(project, server).start(home, user, project, launch, std::move(plan));

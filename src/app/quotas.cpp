@@ -79,22 +79,23 @@ void require_room_for_file(Home& home, const storage::User& user, const fs::path
                       "; delete designs or files, or ask an administrator");
 }
 
+namespace {
+std::mutex starts;  // one start at a time in this process: its check and its count go together
+}  // namespace
+
 RunReservation::RunReservation(Home& home, const storage::User& user, std::int64_t runs, const std::string& what)
-    : home_(home), user_id_(user.id), runs_(runs), day_(today()) {
+    : lock_(starts), home_(home), user_id_(user.id), runs_(runs), day_(today()) {
   storage::Database& db = home.workspace().database();
   const auto limit = storage::limits_in_force(db, user.id).runs_per_day;
-  if (const auto used = storage::reserve_runs(db, user.id, runs, limit, day_))
+  const std::int64_t used = storage::runs_on(db, user.id, day_);
+  if (limit && runs > 0 && used + runs > *limit)
     throw QuotaExceeded("runs quota: " + what + " needs " + std::to_string(runs) + " runs, and " + user.name + " has " +
-                        std::to_string(std::max<std::int64_t>(0, *limit - *used)) + " of " + std::to_string(*limit) +
+                        std::to_string(std::max<std::int64_t>(0, *limit - used)) + " of " + std::to_string(*limit) +
                         " runs left today (UTC); ask an administrator, or wait until tomorrow");
 }
 
-RunReservation::~RunReservation() {
-  if (kept_ || runs_ == 0) return;
-  try {
-    storage::release_runs(home_.workspace().database(), user_id_, runs_, day_);
-  } catch (...) {  // a busy database: the runs stay counted for today, never more work allowed
-  }
+void RunReservation::keep() {
+  if (runs_ > 0) storage::add_runs(home_.workspace().database(), user_id_, runs_, day_);
 }
 
 storage::QuotaLimits server_quota(Home& home, const storage::User& admin) {

@@ -2,13 +2,14 @@
 // Quotas on a shared server (issue #56): disk bytes under an account's folder and simulation
 // runs per UTC day, set by an administrator per account and as the server's default. Every
 // front end asks here before work that writes or runs: a mission or software saved (its bytes),
-// a design or an experiment started (the disk must have room; its runs are reserved, and given
-// back when it does not start or only resumes). A refusal is one line, made before anything
-// is written.
+// a design or an experiment started (the disk must have room; its runs are checked first, and
+// counted once it has started, never when it is refused or only resumes). A refusal is one
+// line, made before anything is written.
 #include <nlohmann/json_fwd.hpp>
 
 #include <cstdint>
 #include <filesystem>
+#include <mutex>
 #include <string>
 
 #include "app/home.hpp"
@@ -25,7 +26,7 @@ struct QuotaExceeded : storage::Conflict {
 
 struct QuotaUse {
   std::uint64_t disk_bytes = 0;  // everything under the account's folder (links not followed)
-  std::int64_t runs_today = 0;   // reserved this UTC day
+  std::int64_t runs_today = 0;   // of work started this UTC day
   storage::QuotaLimits limits;   // in force
   storage::AccountQuota own;     // the account's settings (default, none or a limit)
 };
@@ -41,21 +42,23 @@ void require_disk_room(Home& home, const storage::User& user);
 /// within its disk limit; a write that does not grow the account is always allowed.
 void require_room_for_file(Home& home, const storage::User& user, const std::filesystem::path& file, std::uint64_t bytes);
 
-/// Runs reserved for work about to start; given back on destruction unless kept (the work
-/// started) — so a start that throws, or that only resumes, costs nothing.
+/// The runs of work about to start, checked against the account's limit for today before it
+/// starts and counted only once it has (keep()): a start that is refused for any reason, or
+/// that only resumes, writes nothing. Held, it keeps other starts of this process waiting, so
+/// two requests to one server cannot both slip under a limit.
 class RunReservation {
  public:
   /// QuotaExceeded when the runs would pass the account's limit for today.
   RunReservation(Home& home, const storage::User& user, std::int64_t runs, const std::string& what);
-  ~RunReservation();
   RunReservation(const RunReservation&) = delete;
   RunReservation& operator=(const RunReservation&) = delete;
-  void keep() { kept_ = true; }
+  /// The work started: its runs count for today.
+  void keep();
 
  private:
+  std::unique_lock<std::mutex> lock_;
   Home& home_;
   std::int64_t user_id_, runs_, day_;
-  bool kept_ = false;
 };
 
 /// Administrators only (AccessDenied otherwise).

@@ -211,8 +211,8 @@ CommandRegistrar registrar{10, [](CLI::App& app, Context&) {
 
   auto* quota_command = app.add_subcommand("quota", "What your account uses of its quotas: disk and runs per day");
   quota_command->add_flag("--json", options->json, "print one JSON document");
-  quota_command->footer("An administrator sets them (swarmdesign admin quota). A design reserves its budget when it starts,\n"
-                        "an experiment its whole plan; a resumed one reserves nothing more. Work that would pass a\n"
+  quota_command->footer("An administrator sets them (swarmdesign admin quota). A design counts its budget when it starts,\n"
+                        "an experiment its whole plan; a resumed one counts nothing more. Work that would pass a\n"
                         "limit, and a file that would pass the disk limit, is refused before anything is written.\n\n"
                         "Example:\n  swarmdesign quota");
   quota_command->callback([options] { show_quota(*options); });

@@ -234,7 +234,7 @@ CommandRegistrar registrar{70, [](CLI::App& app, Context&) {
   q->add_option("--disk", o->disk, "Disk limit: a size (500MB, 2GB), none, or default (an account follows the server's)");
   q->add_option("--runs-per-day", o->runs, "Simulation runs per UTC day: a number, none, or default");
   q->add_flag("--json", o->json, "Print one JSON document");
-  q->footer("Disk counts every file under the account's folder (designs, experiments, uploads). A design reserves\n"
+  q->footer("Disk counts every file under the account's folder (designs, experiments, uploads). A design counts\n"
             "its budget when it starts, an experiment its whole plan; work or a file that would pass a limit is\n"
             "refused in one line before anything is written. Users see theirs with `swarmdesign quota`.\n\n"
             "Examples:\n  swarmdesign admin quota --default --disk 20GB --runs-per-day 2000000\n"

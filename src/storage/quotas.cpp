@@ -94,23 +94,9 @@ std::int64_t runs_on(Database& db, std::int64_t user_id, std::int64_t day) {
   return q.step() ? q.integer(0) : 0;
 }
 
-std::optional<std::int64_t> reserve_runs(Database& db, std::int64_t user_id, std::int64_t runs, std::optional<std::int64_t> limit,
-                                         std::int64_t day) {
-  Transaction transaction(db);
-  const std::int64_t used = runs_on(db, user_id, day);
-  if (limit && used + runs > *limit) return used;
+void add_runs(Database& db, std::int64_t user_id, std::int64_t runs, std::int64_t day) {
   db.prepare("INSERT INTO run_use (user_id, day, runs) VALUES (?1, ?2, ?3) "
              "ON CONFLICT (user_id, day) DO UPDATE SET runs = runs + ?3")
-      .bind(1, user_id)
-      .bind(2, day)
-      .bind(3, runs)
-      .run();
-  transaction.commit();
-  return std::nullopt;
-}
-
-void release_runs(Database& db, std::int64_t user_id, std::int64_t runs, std::int64_t day) {
-  db.prepare("UPDATE run_use SET runs = max(0, runs - ?3) WHERE user_id = ?1 AND day = ?2")
       .bind(1, user_id)
       .bind(2, day)
       .bind(3, runs)

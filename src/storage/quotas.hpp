@@ -1,8 +1,8 @@
 #pragma once
 // Quotas (issue #56): what an administrator lets each account use of a shared server — disk
 // bytes under its folder and simulation runs per UTC day — as a server default and per-account
-// settings. Runs are reserved when work is asked for (a design's budget, an experiment's plan),
-// so a day's count is what was started, whether or not it has run yet.
+// settings. Runs are counted when work starts (a design's budget, an experiment's plan), so a
+// day's count is what was started, whether or not it has run yet.
 #include <cstdint>
 #include <optional>
 
@@ -38,14 +38,9 @@ QuotaLimits limits_in_force(Database& db, std::int64_t user_id);
 
 /// The UTC day of a Unix time, as run_use counts it.
 std::int64_t utc_day(std::int64_t unix_seconds);
-/// Runs the account reserved on `day`.
+/// Runs of the work the account started on `day`.
 std::int64_t runs_on(Database& db, std::int64_t user_id, std::int64_t day);
-/// Adds `runs` to the account's count for `day` unless that would pass `limit` (nullopt: no
-/// limit), in one transaction, so two requests at once cannot both slip under it. The count
-/// before the reservation when it was refused; nullopt when it was made.
-std::optional<std::int64_t> reserve_runs(Database& db, std::int64_t user_id, std::int64_t runs, std::optional<std::int64_t> limit,
-                                         std::int64_t day);
-/// Gives back runs reserved on `day` for work that did not start.
-void release_runs(Database& db, std::int64_t user_id, std::int64_t runs, std::int64_t day);
+/// Adds `runs` to the account's count for `day` (work that has started).
+void add_runs(Database& db, std::int64_t user_id, std::int64_t runs, std::int64_t day);
 
 }  // namespace sd::storage
