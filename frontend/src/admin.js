@@ -1,18 +1,68 @@
 // The Admin tab (issue #56), shown to administrators only (GET /api/session says `admin`): every
 // account with its role, state, disk use, running jobs and last sign-in, and what `swarmdesign
 // admin` does to one: disable or enable, a new one-time password (shown here once), the
-// administrator role, delete with everything it owns (its name typed again).
+// administrator role, delete with everything it owns (its name typed again). Quotas too (`swarmdesign
+// admin quota`): each account's disk use of its limit and the runs of work it started today of its
+// per-day limit, "(default)" where it follows the server's default; a dialog setting an account's
+// two limits, and a form below the table for the server's default.
 import { api } from './api.js';
 import { confirmDelete } from './confirm_dialog.js';
+import { bytesText, countText } from './numbers.js';
 import { el } from './properties.js';
+import { full, refreshQuota, useText } from './quota.js';
 
 const $ = (id) => document.getElementById(id);
 
-function megabytes(bytes) { return `${(bytes / 1e6).toFixed(1)} MB`; }
 function when(seconds) { return seconds === null ? 'never' : new Date(seconds * 1000).toISOString().slice(0, 16).replace('T', ' ') + ' UTC'; }
+
+/// A limit in bytes as the MB field shows it: empty for no limit.
+const mbText = (bytes) => (bytes === null || bytes === undefined ? '' : String(bytes / 1e6));
+/// A limit as its field shows it: empty for no limit.
+const runsText = (runs) => (runs === null || runs === undefined ? '' : String(runs));
+/// A field's text as a limit: null for empty (no limit); an Error naming the field otherwise.
+function limitOf(text, what, toUnits, whole) {
+  const t = text.trim();
+  if (t === '') return null;
+  const v = Number(t);
+  if (!Number.isFinite(v) || v < 0 || (whole && !Number.isInteger(v))) throw new Error(`${what}: ${whole ? 'a whole number' : 'a number'} of 0 or more, or empty for no limit`);
+  return Math.round(v * toUnits);
+}
+const limitPhrase = (limit, format) => (limit === null || limit === undefined ? 'no limit' : format(limit));
 
 export function initAdmin({ me }) {
   const note = (text, testid = 'admin-note') => $('admin-note').replaceChildren(el('div', { testid, text }));
+  let serverDefault = { disk_limit: null, runs_per_day: null };
+
+  // The server's default quota, under the table: empty fields are no limit.
+  const defaultDisk = el('input', { type: 'number', min: '0', step: 'any', testid: 'admin-default-disk', placeholder: 'no limit', 'aria-label': 'default disk limit in MB' });
+  const defaultRuns = el('input', { type: 'number', min: '0', step: '1', testid: 'admin-default-runs', placeholder: 'no limit', 'aria-label': 'default runs per day' });
+  let defaultEdited = false;  // typed into and not saved: a refresh leaves the fields alone
+  for (const input of [defaultDisk, defaultRuns]) input.addEventListener('input', () => { defaultEdited = true; });
+  const defaultForm = el('form', { class: 'admin-default row small', testid: 'admin-default-form' },
+    el('strong', { text: 'Server default quota' }),
+    el('label', { class: 'inline' }, 'disk', defaultDisk, 'MB'),
+    el('label', { class: 'inline' }, 'runs per day', defaultRuns),
+    el('button', { type: 'submit', class: 'small', testid: 'admin-default-save', text: 'Save default' }),
+    el('span', { class: 'muted', text: 'Empty: no limit. Accounts marked (default) follow it; a design counts its budget against the day\'s runs when it starts.' }));
+  defaultForm.addEventListener('submit', async (e) => {
+    e.preventDefault();
+    try {
+      const body = { disk_limit: limitOf(defaultDisk.value, 'disk', 1e6, false), runs_per_day: limitOf(defaultRuns.value, 'runs per day', 1, true) };
+      serverDefault = await api('/api/admin/quota', { body, quiet: true });
+      defaultEdited = false;
+      note(`server default: disk ${limitPhrase(serverDefault.disk_limit, bytesText)}, runs per day ${limitPhrase(serverDefault.runs_per_day, countText)}`);
+    } catch (err) {
+      note(err.message, 'admin-error');
+    }
+    await refresh();
+  });
+  $('admin-note').before(defaultForm);
+
+  async function saveQuota(name, body) {
+    await api(`/api/admin/users/${encodeURIComponent(name)}/quota`, { body, quiet: true });
+    note(`${name}: quota set`);
+    await refresh();
+  }
 
   async function act(name, verb, body = {}) {
     try {
@@ -30,7 +80,9 @@ export function initAdmin({ me }) {
 
   function row(a) {
     const self = a.name === me();
-    const buttons = self ? [el('span', { class: 'muted small', text: 'you' })] : [
+    const quota = el('button', { type: 'button', class: 'small', testid: `admin-quota-${a.name}`, text: 'Quota…',
+      onclick: () => quotaDialog(a, serverDefault, (body) => saveQuota(a.name, body)) });
+    const buttons = self ? [quota, el('span', { class: 'muted small', text: 'you' })] : [quota,
       el('button', { type: 'button', class: 'small', testid: `admin-${a.disabled ? 'enable' : 'disable'}-${a.name}`,
         text: a.disabled ? 'Enable' : 'Disable', onclick: () => act(a.name, a.disabled ? 'enable' : 'disable') }),
       el('button', { type: 'button', class: 'small', testid: `admin-reset-${a.name}`, text: 'New password', onclick: () => act(a.name, 'reset-password') }),
@@ -38,27 +90,87 @@ export function initAdmin({ me }) {
         onclick: () => act(a.name, 'role', { role: a.role === 'admin' ? 'user' : 'admin' }) }),
       el('button', { type: 'button', class: 'small danger', testid: `admin-delete-${a.name}`, text: 'Delete', onclick: async () => {
         const sure = await confirmDelete({ title: `Delete account ${a.name}?`, typeToConfirm: a.name,
-          text: `Its projects, designs, experiments and files go with it (${megabytes(a.disk_bytes)}). Nothing of another account is touched.` });
+          text: `Its projects, designs, experiments and files go with it (${bytesText(a.disk_bytes)}). Nothing of another account is touched.` });
         if (sure) await act(a.name, 'delete', { confirm: a.name });
       } }),
     ];
+    const q = a.quota || { disk_limit: null, runs_per_day: null, runs_today: 0, disk_from_default: true, runs_from_default: true };
     return el('tr', { testid: `admin-row-${a.name}` },
       el('td', { text: a.name }), el('td', { text: a.role }),
       el('td', { testid: `admin-state-${a.name}`, text: a.disabled ? 'disabled' : 'active' }),
-      el('td', { class: 'num', text: megabytes(a.disk_bytes) }),
+      quotaCell(`admin-disk-${a.name}`, a.disk_bytes, q.disk_limit, q.disk_from_default, bytesText),
+      quotaCell(`admin-runs-${a.name}`, q.runs_today, q.runs_per_day, q.runs_from_default, countText),
       el('td', { class: 'num', text: String(a.running_designs + a.running_experiments) }),
-      el('td', { text: when(a.last_sign_in) }),
-      el('td', { class: 'row' }, ...buttons));
+      el('td', { class: 'when', text: when(a.last_sign_in) }),
+      // In a box of its own: a flex <td> leaves the table's grid (its border off the row's).
+      el('td', {}, el('div', { class: 'row admin-actions' }, ...buttons)));
   }
 
   async function refresh() {
     try {
-      const list = await api('/api/admin/users', { quiet: true });
+      const [list, limits] = await Promise.all([api('/api/admin/users', { quiet: true }), api('/api/admin/quota', { quiet: true })]);
+      serverDefault = limits;
+      if (!defaultEdited) { defaultDisk.value = mbText(limits.disk_limit); defaultRuns.value = runsText(limits.runs_per_day); }
       $('admin-accounts').replaceChildren(...list.map(row));
     } catch (e) {
       note(e.message, 'admin-error');
     }
+    refreshQuota();  // the administrator's own line, if their quota or the default changed
   }
 
   return { shown: refresh };
+}
+
+/// "1.2 MB of 100.0 MB (default)": what is used of the limit in force; full when at or over it.
+function quotaCell(testid, used, limit, fromDefault, format) {
+  return el('td', { class: `quota-cell${full(used, limit) ? ' full' : ''}`, testid },
+    useText(used, limit, format), ...(fromDefault ? [el('span', { class: 'muted', text: ' (default)' })] : []));
+}
+
+/// An account's two limits: each the server's default, or its own (empty: no limit).
+function quotaDialog(account, serverDefault, save) {
+  const q = account.quota || { disk_limit: null, runs_per_day: null, disk_from_default: true, runs_from_default: true };
+  const message = el('p', { class: 'small', testid: 'quota-message' });
+  function limitField(key, label, unit, current, fromDefault, asText, defaultLimit, format, attrs) {
+    const input = el('input', { type: 'number', min: '0', placeholder: 'no limit', testid: `quota-${key}`, ...attrs });
+    const follow = el('input', { type: 'checkbox', testid: `quota-${key}-default` });
+    input.value = fromDefault ? '' : asText(current);
+    follow.checked = fromDefault;
+    // Following the default, the field shows the default's value, greyed.
+    const sync = () => { input.disabled = follow.checked; input.placeholder = follow.checked ? asText(defaultLimit) || 'no limit' : 'no limit'; };
+    follow.addEventListener('change', () => { sync(); if (!follow.checked) input.focus(); });
+    sync();
+    const box = el('div', { class: 'stack' },
+      el('label', { class: 'quota-field' }, label, el('span', { class: 'row' }, input, el('span', { class: 'muted small', text: unit }))),
+      el('label', { class: 'inline small' }, follow, `server default (${limitPhrase(defaultLimit, format)})`));
+    return { box, value: () => (follow.checked ? 'default' : input.value) };
+  }
+  const disk = limitField('disk', 'Disk', 'MB', q.disk_limit, q.disk_from_default, mbText, serverDefault.disk_limit, bytesText, { step: 'any' });
+  const runs = limitField('runs', 'Simulation runs per day (UTC)', 'runs', q.runs_per_day, q.runs_from_default, runsText,
+    serverDefault.runs_per_day, countText, { step: '1' });
+  const ok = el('button', { type: 'submit', class: 'primary', testid: 'quota-ok', text: 'Save' });
+  const cancel = el('button', { type: 'button', testid: 'quota-cancel', text: 'Cancel' });
+  const form = el('form', { class: 'stack' }, el('strong', { text: `Quota of ${account.name}` }),
+    el('p', { class: 'muted small', text: `Uses ${bytesText(account.disk_bytes)}; started ${countText(q.runs_today ?? 0)} runs today. Empty: no limit. `
+      + 'Work already started goes on; what would pass a limit is refused.' }),
+    disk.box, runs.box, message, el('div', { class: 'row' }, cancel, ok));
+  const dialog = el('dialog', { class: 'confirm-dialog quota-dialog', testid: 'quota-dialog' }, form);
+  form.addEventListener('submit', async (e) => {
+    e.preventDefault();
+    message.classList.remove('error');
+    try {
+      const asked = (value, what, toUnits, whole) => (value === 'default' ? 'default' : limitOf(value, what, toUnits, whole));
+      await save({ disk_limit: asked(disk.value(), 'disk', 1e6, false), runs_per_day: asked(runs.value(), 'runs per day', 1, true) });
+      dialog.close();
+    } catch (err) {
+      message.classList.add('error');
+      message.textContent = err.message;
+    }
+  });
+  cancel.addEventListener('click', () => dialog.close());
+  dialog.addEventListener('click', (e) => { if (e.target === dialog) dialog.close(); });
+  dialog.addEventListener('close', () => dialog.remove());
+  document.body.append(dialog);
+  dialog.showModal();
+  form.querySelector('input:not(:disabled)')?.focus();
 }

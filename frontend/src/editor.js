@@ -7,6 +7,7 @@ import { History } from './history.js';
 import { fsmEditor } from './fsm_editor.js';
 import { btEditor } from './bt_editor.js';
 import { el } from './properties.js';
+import { refreshQuota } from './quota.js';
 import * as sm from './software_model.js';
 import { confirmDelete } from './confirm_dialog.js';
 import { downloadSvg } from './svg_export.js';
@@ -200,6 +201,7 @@ export function initEditor({ onExec }) {
           e.stopPropagation();
           if (!await confirmDelete({ title: `Delete ${item.name}?`, text: `The control software saved as ${item.name} in project ${project} is deleted.` })) return;
           try { await api(`/api/projects/${encodeURIComponent(project)}/software/${encodeURIComponent(item.name)}/delete`, { body: {} }); } catch { return; }
+          refreshQuota();
           await refreshSoftware();
         } });
       rows.push(el('li', { title: item.text, testid: `software-${item.name}`, onclick: () => { textarea.value = item.text; parseText(item.text); } },
@@ -223,6 +225,7 @@ export function initEditor({ onExec }) {
     if (!projectSelect.value || !name) { showError('choose a project and a name'); return; }
     try {
       await api(`/api/projects/${encodeURIComponent(projectSelect.value)}/software`, { body: { name, text: current.text } });
+      refreshQuota();
       await refreshSoftware();
     } catch { /* shown */ }
   });

@@ -6,6 +6,8 @@
 import { api } from './api.js';
 import { readable } from './numbers.js';
 import { el } from './properties.js';
+import { quotaRefused, refreshQuota } from './quota.js';
+import { clearError } from './toast.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -85,9 +87,12 @@ export function initExperiments({ project, onChanged, onFollow }) {
       } else {
         out.replaceChildren(el('div', { testid: 'exp-started', text: `${answer.experiment.name} ${answer.already_finished ? 'had already finished' : answer.resumed ? 'resumed' : 'started'} ${answer.where === 'slurm' ? 'as a Slurm job array' : 'on this server'}` }),
           ...answer.notes.map((n) => el('div', { class: 'muted', text: n })));
+        clearError();  // a refusal shown before is stale
+        refreshQuota();  // its plan's runs are counted in today's
         onChanged();
       }
     } catch (e) {
+      quotaRefused(e);
       out.replaceChildren(el('div', { class: 'error', testid: 'exp-error', text: e.message }));
     }
   }

@@ -10,6 +10,7 @@ import { initMonitor } from './monitor.js';
 import { copyFullScores } from './numbers.js';
 import { initAdmin } from './admin.js';
 import { changePasswordDialog } from './password_dialog.js';
+import { initQuota, refreshQuota } from './quota.js';
 import { showSignIn } from './signin.js';
 import { clearError, showError } from './toast.js';
 
@@ -24,6 +25,7 @@ function showTab(name) {
   for (const tab of document.querySelectorAll('.tab')) tab.classList.toggle('active', tab.dataset.tab === name);
   if (history.replaceState) history.replaceState(null, '', `#${name}`);
   if (!parts) return;
+  refreshQuota();
   if (name === 'editor') { parts.editor.resize(); parts.editor.refreshProjects(); }
   if (name === 'exec') parts.exec.shown();
   if (name === 'designs') parts.monitor.shown(); else parts.monitor.hidden();
@@ -35,8 +37,10 @@ async function startApp(user) {
   $('user-name').textContent = user;
   $('signin').hidden = true;
   $('app').hidden = false;
+  refreshQuota();  // signed in again (perhaps as another account)
   if (started) return;
   started = true;
+  initQuota();
   await loadCatalogue();
   const exec = initExec();
   const editor = initEditor({ onExec: (text) => { exec.prepare({ text }); showTab('exec'); } });

@@ -6,6 +6,8 @@
 // the whole document: what the form does not cover is edited there, and both stay in step.
 import { api } from './api.js';
 import { el } from './properties.js';
+import { quotaRefused, refreshQuota } from './quota.js';
+import { clearError } from './toast.js';
 
 const $ = (id) => document.getElementById(id);
 const COLOURS = ['black', 'white', 'gray'];
@@ -231,8 +233,11 @@ export function initMissionEditor({ onSaved }) {
     try {
       const saved = await api(`/api/projects/${encodeURIComponent(project)}/missions`, { body: { name: $('me-name').value, text: $('me-json').value }, quiet: true });
       say(`saved as ${project}/missions/${saved.file_name}.json: choose it for a new project or try it in Exec`, 'done');
+      clearError();  // a refusal shown before is stale
+      refreshQuota();
       await onSaved(saved);
     } catch (err) {
+      quotaRefused(err);
       say(err.message, 'error');
     }
   });

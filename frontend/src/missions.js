@@ -2,6 +2,8 @@
 // objective, and the form that brings a user's own mission file into one of their projects.
 import { api } from './api.js';
 import { el } from './properties.js';
+import { quotaRefused, refreshQuota } from './quota.js';
+import { clearError } from './toast.js';
 
 export function renderMissions(container, missions, onTry) {
   container.replaceChildren(...missions.map((m) => el('div', { class: 'mission-card', testid: `mission-${m.name}` },
@@ -47,8 +49,11 @@ export function initMissionUpload({ onUploaded }) {
         { body: { name: $('upload-name').value, text: await file.text() }, quiet: true });
       say(`added ${mission.title} to ${project}: choose it for a new project or try it in Exec`, 'done');
       $('mission-upload').reset();
+      clearError();  // a refusal shown before is stale
+      refreshQuota();
       await onUploaded(mission);
     } catch (e) {
+      quotaRefused(e);
       say(e.message, 'error');
     }
   });

@@ -14,6 +14,7 @@ import { confirmDelete } from './confirm_dialog.js';
 import { initExperiments } from './experiments.js';
 import { readable } from './numbers.js';
 import { download } from './download.js';
+import { refreshQuota } from './quota.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -124,6 +125,7 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
     try { await api(`/api/projects/${encodeURIComponent(project)}/designs/${d.id}/delete`, { body: {} }); } catch { return; }
     comparing.delete(d.id);
     if (opened === d.id) opened = null;
+    refreshQuota();
     await refreshDesigns();
     poll();
   }
@@ -340,6 +342,7 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
       const body = resume ? {} : { ...form.request(), fresh: $('design-fresh').checked };
       await api(`/api/projects/${encodeURIComponent(name)}/designs`, { body });
     } catch { return; }
+    refreshQuota();  // its budget is counted in today's runs
     fastUntil = Date.now() + 10000;
     refreshDesigns();
     refreshProjects().catch(() => {});  // the budget the form may have set
@@ -418,6 +421,7 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
     $('compare-result').replaceChildren();
     const left = await refreshProjects();
     if (!left.length) renderStatus({});
+    refreshQuota();
     onProjectsChanged();
   });
   // The best shown, for ARGoS3-AutoMoDe: the mission's .argos file downloads, and the command

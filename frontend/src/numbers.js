@@ -27,3 +27,15 @@ export function copyFullScores(doc = document) {
     e.preventDefault();
   });
 }
+
+/// "840 B", "2.1 kB", "1.0 MB": sizes as the server's messages write them (powers of 1000).
+export function bytesText(bytes) {
+  const units = ['B', 'kB', 'MB', 'GB', 'TB'];
+  let v = Number(bytes);
+  let unit = 0;
+  while (v >= 1000 && unit < units.length - 1) { v /= 1000; unit++; }
+  return unit === 0 ? `${Math.round(v)} B` : `${v.toFixed(1)} ${units[unit]}`;
+}
+
+/// A count of runs, thousands grouped as the rest of the page writes them ("100,000").
+export function countText(n) { return Number(n).toLocaleString('en'); }
