@@ -1,4 +1,5 @@
-// Running a lab's home (issue #56): accounts, quotas, `admin backup`, `admin restore` and `admin check`. Whoever
+// Running a lab's home (issue #56): accounts, quotas, invitations, `admin backup`, `admin restore`
+// and `admin check`. Whoever
 // runs them owns the home's files (0700): on a shared server, its administrator's Unix account.
 // The work is the application layer's (app/home_backup); this file parses and prints.
 #include <CLI/CLI.hpp>
@@ -17,6 +18,7 @@
 #include "app/account_admin.hpp"
 #include "app/accounts.hpp"
 #include "app/quotas.hpp"
+#include "app/sign_up.hpp"
 #include "storage/account_admin.hpp"
 #include "storage/clock.hpp"
 
@@ -28,6 +30,8 @@ namespace {
 struct Options {
   std::string file, into, name, role, disk, runs;
   bool json = false, yes = false, server_default = false;
+  int days = 7;
+  std::int64_t id = 0;
 };
 
 std::string megabytes(std::uint64_t bytes) {
@@ -135,6 +139,42 @@ void quota(const Options& o) {
   else std::cout << o.name << ": " << app::quota_text(use) << "\n";
 }
 
+// Invitations for a server run with --sign-up invite: the code is printed once.
+void invite(const Options& o) {
+  app::Home home;
+  const storage::NewInvitation made = app::invite(home, app::signed_in_user(home), o.days);
+  if (o.json) {
+    std::cout << app::new_invitation_document(made).dump(2) << "\n";
+    return;
+  }
+  std::cout << "Invitation " << made.id << " (shown once; valid until " << storage::format_time(made.expires_at)
+            << ", for one sign-up): " << made.code << "\n"
+            << "Hand it over with the page's address; on the page: Sign up, with this code. Or send the link\n"
+            << "  http://SERVER/#invite=" << made.code << "\n"
+            << "It works on a server run with: swarmdesign run-exp --sign-up invite\n";
+}
+
+void list_invitations(const Options& o) {
+  app::Home home;
+  const nlohmann::json list = app::invitations_document(app::invitations(home, app::signed_in_user(home)));
+  if (o.json) {
+    std::cout << list.dump(2) << "\n";
+    return;
+  }
+  if (list.empty()) std::cout << "No invitations. Make one with: swarmdesign admin invite\n";
+  for (const auto& i : list)
+    std::cout << i["id"].get<std::int64_t>() << "  " << i["state"].get<std::string>() << "  made by "
+              << (i["created_by"].is_null() ? "(deleted)" : i["created_by"].get<std::string>()) << ", valid until "
+              << storage::format_time(i["expires_at"].get<std::int64_t>())
+              << (i["used_by"].is_null() ? "" : ", used by " + i["used_by"].get<std::string>()) << "\n";
+}
+
+void revoke(const Options& o) {
+  app::Home home;
+  app::revoke_invitation(home, app::signed_in_user(home), o.id);
+  std::cout << "Revoked invitation " << o.id << ": its code no longer signs anyone up.\n";
+}
+
 void backup(const Options& o) {
   app::Home home;
   const storage::HomeArchive archive = app::back_up_home(home, o.file);
@@ -240,6 +280,19 @@ CommandRegistrar registrar{70, [](CLI::App& app, Context&) {
             "Examples:\n  swarmdesign admin quota --default --disk 20GB --runs-per-day 2000000\n"
             "  swarmdesign admin quota alice --disk none\n  swarmdesign admin quota bob --runs-per-day default");
   q->callback([o] { quota(*o); });
+
+  auto* inv = admin->add_subcommand("invite", "Make a one-time invitation to sign up on the page (printed once)");
+  inv->add_option("--days", o->days, "How long it is valid, 1 to 90 days")->capture_default_str();
+  inv->add_flag("--json", o->json, "Print one JSON document");
+  inv->footer("For a server run with `swarmdesign run-exp --sign-up invite`: whoever brings the code signs up\n"
+              "once, before it expires. Only its hash is stored.\n\nExample:\n  swarmdesign admin invite --days 14");
+  inv->callback([o] { invite(*o); });
+  auto* invs = admin->add_subcommand("invitations", "List the invitations: open, used (by whom) or expired");
+  invs->add_flag("--json", o->json, "Print one JSON document");
+  invs->callback([o] { list_invitations(*o); });
+  auto* rev = admin->add_subcommand("revoke-invitation", "Revoke an unused invitation");
+  rev->add_option("ID", o->id, "the invitation's number (admin invitations)")->required();
+  rev->callback([o] { revoke(*o); });
 
   auto* c = admin->add_subcommand("check", "Check the home: databases, folders, links");
   c->add_flag("--json", o->json, "Print one JSON document");

@@ -12,6 +12,7 @@
 
 #include "cli/command_registry.hpp"
 #include "cli/web_root.hpp"
+#include "app/sign_up.hpp"
 #include "core/home.hpp"
 #include "web/web_server.hpp"
 
@@ -24,6 +25,7 @@ struct WebOptions {
   std::string web_root = default_web_root();
   std::vector<std::string> allowed_hosts;
   bool behind_tls = false;
+  std::string sign_up = "closed";
 };
 
 void run_exp(const WebOptions& o) {
@@ -38,7 +40,9 @@ void run_exp(const WebOptions& o) {
   for (const std::string& name : o.allowed_hosts)
     if (name.empty() || name.size() > 253 || name.find_first_of(" /\\@?#") != std::string::npos)
       throw UsageError("--allowed-host '" + name + "' is not a host name (give a name such as lab.example.org)");
-  web::WebServer server({o.host, o.port, o.web_root, swarmdesign_home(), o.allowed_hosts, {}, o.behind_tls});
+  const auto sign_up = app::parse_sign_up_policy(o.sign_up);
+  if (!sign_up) throw UsageError("--sign-up '" + o.sign_up + "': closed, invite or open");
+  web::WebServer server({o.host, o.port, o.web_root, swarmdesign_home(), o.allowed_hosts, {}, o.behind_tls, *sign_up});
   const int port = server.bind();
   if (!web::HostCheck::is_loopback(o.host)) {
     std::cout << "Warning: listening on " << o.host << ", not only on this machine: anyone who can reach it "
@@ -78,12 +82,17 @@ const CommandRegistrar registrar{60, [](CLI::App& app, Context&) {
   cmd->add_flag("--behind-tls", o->behind_tls,
                 "a TLS reverse proxy (e.g. Caddy or nginx) serves the page over HTTPS: session cookies are marked "
                 "Secure, so a browser never sends them over plain HTTP");
+  cmd->add_option("--sign-up", o->sign_up,
+                  "who may make an account on the page: closed (accounts are made here with swarmdesign sign-up), "
+                  "invite (whoever brings an invitation: swarmdesign admin invite) or open (anyone who reaches it)")
+      ->capture_default_str();
   cmd->footer("Sign in with your SwarmDesign account (swarmdesign sign-up). Every page and API route needs a "
               "session. A request naming another Host is refused (no web page can reach the server by DNS "
               "rebinding); 5 wrong passwords in a row lock a name for a minute, 20 lock the client's address."
               "\n\nExample:\n  swarmdesign run-exp\n  swarmdesign run-exp --port 9000\n"
               "  swarmdesign run-exp --host 0.0.0.0 --allowed-host lab.example.org\n"
-              "  swarmdesign run-exp --allowed-host lab.example.org --behind-tls   (Caddy on the same machine)");
+              "  swarmdesign run-exp --allowed-host lab.example.org --behind-tls   (Caddy on the same machine)\n"
+              "  swarmdesign run-exp --sign-up invite   (a lab's members sign up with an administrator's invitation)");
   cmd->callback([o] { run_exp(*o); });
 }};
 

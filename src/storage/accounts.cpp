@@ -33,7 +33,7 @@ std::string in_quotes(std::string_view name) {
 
 bool user_exists(Database& db, std::string_view name) { return find_user(db, name).has_value(); }
 
-User create_user(Database& db, std::string_view name, std::string_view password) {
+User create_user(Database& db, std::string_view name, std::string_view password, const std::function<void(const User&)>& also) {
   if (auto problem = user_name_problem(name); !problem.empty()) throw InvalidInput(problem);
   if (auto problem = password_problem(password, name); !problem.empty()) throw InvalidInput(problem);
   const std::string taken = "user name " + in_quotes(name) + " is already taken; choose another";
@@ -50,6 +50,7 @@ User create_user(Database& db, std::string_view name, std::string_view password)
   insert.bind(1, name).bind(2, hash).bind(3, now).run();
   if (db.changes() == 0) throw Conflict(taken);
   User user{db.last_insert_id(), std::string(name), now};
+  if (also) also(user);
   transaction.commit();
   return user;
 }

@@ -252,6 +252,19 @@ CREATE TABLE run_use (
   PRIMARY KEY (user_id, day)
 );
 )sql",
+    // 11: invitations (issue #56): an administrator's one-time code lets one person sign up on
+    // the page of a server run with --sign-up invite. Only the code's hash is kept, as for sessions.
+    R"sql(
+CREATE TABLE invitations (
+  id         INTEGER PRIMARY KEY,
+  code_hash  BLOB    NOT NULL UNIQUE,
+  created_by INTEGER REFERENCES users(id) ON DELETE SET NULL,
+  created_at INTEGER NOT NULL,
+  expires_at INTEGER NOT NULL,
+  used_by    INTEGER REFERENCES users(id) ON DELETE SET NULL,
+  used_at    INTEGER
+);
+)sql",
 };
 
 }  // namespace

@@ -1,8 +1,10 @@
-// Sign-in, the session and sign-out: the CLI's accounts, the session kept in a cookie.
+// Sign-in, sign-up (by the server's policy), the session and sign-out: the CLI's accounts, the
+// session kept in a cookie.
 #include <chrono>
 
 #include "app/account_admin.hpp"
 #include "app/quotas.hpp"
+#include "app/sign_up.hpp"
 #include "app/accounts.hpp"
 #include "app/errors.hpp"
 #include "web/host_check.hpp"
@@ -56,6 +58,32 @@ void add_account_routes(Routes& routes) {
                              SessionGuard::session_cookie(token, static_cast<long>(app::kSessionLifetime.count()),
                                                           call.context.behind_tls));
     send_json(call.response, {{"user", name}, {"csrf", call.context.guard.csrf_token(token)}});
+  });
+
+  // Sign-up on the page (issue #56): closed unless the server was started with --sign-up
+  // invite or open. Like a sign-in it takes a password slot (Argon2id), and a refused one
+  // counts against the address, so codes cannot be guessed in bulk.
+  routes.get_public("/api/sign-up", [](Call& call) -> nlohmann::json {
+    return {{"policy", app::sign_up_policy_name(call.context.sign_up)}};
+  });
+  routes.post_public("/api/sign-up", [](Call& call) {
+    const std::string address = client_address(call);
+    const PasswordSlots::Held slot = call.context.passwords.take();
+    if (const std::int64_t wait = call.context.addresses.locked_for(address); wait > 0)
+      throw app::TooManyAttempts("too many failed attempts from your address: try again in " + std::to_string(wait) + " s",
+                                 wait);
+    const std::string invitation = call.body.contains("invitation") ? text_field(call.body, "invitation") : std::string();
+    app::SignedUp made;
+    try {
+      made = app::sign_up_on_server(call.home, call.context.sign_up, text_field(call.body, "name"),
+                                    text_field(call.body, "password"), invitation);
+    } catch (const app::AccessDenied&) {
+      call.context.addresses.failed(address);
+      throw;
+    }
+    call.response.set_header("Set-Cookie", SessionGuard::session_cookie(made.token, static_cast<long>(app::kSessionLifetime.count()),
+                                                                        call.context.behind_tls));
+    send_json(call.response, {{"user", made.user.name}, {"csrf", call.context.guard.csrf_token(made.token)}});
   });
 
   routes.get("/api/session", [](Call& call) -> nlohmann::json {

@@ -1,8 +1,11 @@
 // The page's Admin section (issue #56): for administrators only (403 for anyone else), the
 // CLI's `admin users/disable/enable/reset-password/role/delete-user/quota` over the same services.
+#include <algorithm>
+
 #include "app/account_admin.hpp"
 #include "app/errors.hpp"
 #include "app/quotas.hpp"
+#include "app/sign_up.hpp"
 #include "web/http_io.hpp"
 #include "web/routes.hpp"
 
@@ -41,6 +44,20 @@ void add_admin_routes(Routes& routes) {
     app::set_account_quota(call.home, call.user, call.match(1), app::account_quota_from_document(call.body));
     const storage::User user = storage::account_row(call.home.workspace().database(), call.match(1)).user;
     return {{"name", call.match(1)}, {"quota", app::quota_document(app::quota_use(call.home, user))}};
+  });
+  // Invitations (a server run with --sign-up invite): the code is in the answer that made it only.
+  routes.get("/api/admin/invitations", [](Call& call) { return app::invitations_document(app::invitations(call.home, call.user)); });
+  routes.post("/api/admin/invitations", [](Call& call) {
+    std::int64_t days = 7;
+    if (call.body.contains("days")) {
+      if (!call.body["days"].is_number_integer()) throw app::InvalidRequest("days must be a whole number of 1 to 90");
+      days = std::clamp<std::int64_t>(call.body["days"].get<std::int64_t>(), -1, 91);  // out of range either way
+    }
+    return app::new_invitation_document(app::invite(call.home, call.user, static_cast<int>(days)));
+  });
+  routes.post("/api/admin/invitations/([0-9]{1,18})/revoke", [](Call& call) -> nlohmann::json {
+    app::revoke_invitation(call.home, call.user, std::stoll(call.match(1)));
+    return {{"revoked", std::stoll(call.match(1))}};
   });
   routes.post(account + "/delete", [](Call& call) -> nlohmann::json {
     app::delete_account(call.home, call.user, call.match(1), text_field(call.body, "confirm"));

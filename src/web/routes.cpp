@@ -49,6 +49,12 @@ void Routes::post_public(const std::string& pattern, RawRoute route) {
   server_.Post(pattern, [context = &context_, route = std::move(route)](const httplib::Request& q, httplib::Response& r) { answer(*context, q, r, true, false, route); });
 }
 
+void Routes::get_public(const std::string& pattern, JsonRoute route) {
+  server_.Get(pattern, [context = &context_, route](const httplib::Request& q, httplib::Response& r) {
+    answer(*context, q, r, false, false, [&route](Call& call) { answer_json(call, route(call)); });
+  });
+}
+
 void follow_running(Call& call, const std::string& project, const std::vector<app::ExperimentProgress>& experiments) {
   for (const auto& e : experiments)
     if (e.experiment.state == storage::DesignState::running && !call.context.experiments.running_here(e.experiment.id)) {

@@ -14,6 +14,7 @@
 #include "app/background_experiments.hpp"
 #include "app/cluster_collector.hpp"
 #include "app/home.hpp"
+#include "app/sign_up.hpp"
 #include "app/accounts.hpp"
 #include "web/password_slots.hpp"
 #include "web/run_registry.hpp"
@@ -25,8 +26,9 @@ namespace sd::web {
 /// What the routes share for the server's lifetime.
 struct WebContext {
   WebContext(std::filesystem::path home_folder, std::filesystem::path web_root_folder, storage::SignInPolicy policy,
-             bool tls_proxy)
+             bool tls_proxy, app::SignUpPolicy sign_up_policy = app::SignUpPolicy::closed)
       : home(std::move(home_folder)), web_root(std::move(web_root_folder)), sign_in(policy), behind_tls(tls_proxy),
+        sign_up(sign_up_policy),
         addresses(policy), passwords(kPasswordChecksAtOnce), designs("web"), experiments("webx"),
         cluster_experiments(home, kClusterCollectionInterval) {}
   static constexpr int kPasswordChecksAtOnce = 4;  // 256 MiB of Argon2id at most
@@ -35,6 +37,7 @@ struct WebContext {
   std::filesystem::path web_root;  // the built front end (the report page's bundle)
   storage::SignInPolicy sign_in;
   bool behind_tls;                 // session cookies only over HTTPS (a TLS proxy in front)
+  app::SignUpPolicy sign_up;       // who may make an account on the page (app/sign_up.hpp)
   SignInLimiter addresses;         // failed sign-ins per client address
   PasswordSlots passwords;         // password checks at once (password_slots.hpp)
   SessionGuard guard;
@@ -70,6 +73,8 @@ class Routes {
   void post(const std::string& pattern, JsonRoute route);
   /// POST without a session (sign-in): still JSON only, so no cross-site form can send it.
   void post_public(const std::string& pattern, RawRoute route);
+  /// GET without a session: what the sign-in page must know before anyone signs in.
+  void get_public(const std::string& pattern, JsonRoute route);
 
   WebContext& context() { return context_; }
 

@@ -13,7 +13,7 @@ namespace sd::web {
 
 WebServer::WebServer(WebServerOptions options)
     : options_(std::move(options)),
-      context_(std::make_unique<WebContext>(options_.home, options_.web_root, options_.sign_in, options_.behind_tls)),
+      context_(std::make_unique<WebContext>(options_.home, options_.web_root, options_.sign_in, options_.behind_tls, options_.sign_up)),
       server_(std::make_unique<httplib::Server>()) {
   // A shared server keeps every user's files to itself: what it creates (projects, designs,
   // saved software, exports) is 0600, its folders 0700, whatever umask it was started with.

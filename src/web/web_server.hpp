@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/accounts.hpp"
+#include "app/sign_up.hpp"
 #include "web/host_check.hpp"
 
 namespace httplib {
@@ -25,6 +26,7 @@ struct WebServerOptions {
   std::vector<std::string> allowed_hosts;  // host names it answers besides its address (host_check.hpp)
   storage::SignInPolicy sign_in;   // lock-outs after failed sign-ins
   bool behind_tls = false;         // a TLS reverse proxy serves it: session cookies are Secure
+  app::SignUpPolicy sign_up = app::SignUpPolicy::closed;  // who may make an account on the page
 };
 
 /// Most bytes a request body may have (a configuration string is under 2 kB).
