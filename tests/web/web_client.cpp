@@ -51,6 +51,18 @@ bool WebClient::sign_in(const std::string& name, const std::string& password) {
   return true;
 }
 
+Answer WebClient::sign_up(const nlohmann::json& body) {
+  Answer answer = answer_of(client_.Post("/api/sign-up", body.dump(), "application/json"));
+  if (answer.status == 200) {
+    const std::string set_cookie = answer.headers.find("Set-Cookie") != answer.headers.end()
+                                       ? answer.headers.find("Set-Cookie")->second
+                                       : std::string();
+    cookie_ = set_cookie.substr(0, set_cookie.find(';'));
+    csrf_ = answer.body.at("csrf").get<std::string>();
+  }
+  return answer;
+}
+
 httplib::Headers WebClient::headers(bool csrf) const {
   httplib::Headers h;
   if (!cookie_.empty()) h.emplace("Cookie", cookie_);

@@ -50,6 +50,8 @@ class WebClient {
   }
   /// Signs in; false on refusal.
   bool sign_in(const std::string& name, const std::string& password);
+  /// Signs up on the page (POST /api/sign-up with `body`), keeping the new session on success.
+  Answer sign_up(const nlohmann::json& body);
 
   Answer get(const std::string& path);
   /// A JSON POST with the session's CSRF token (unless `csrf` is false).
