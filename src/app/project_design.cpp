@@ -6,6 +6,7 @@
 #include "app/errors.hpp"
 #include "app/inputs.hpp"
 #include "app/lease_keeper.hpp"
+#include "app/projects.hpp"
 #include "core/bounded_file.hpp"
 #include "core/durable_file.hpp"
 #include "control/config_string.hpp"
@@ -108,6 +109,10 @@ ProjectDesign start_project_design(Home& home, const storage::User& user, const 
     return {workspace.home(), project, resumed, std::move(prepared), true, std::nullopt};
   }
 
+  // Said in the project's words, not as the file rule's refusal of a path the user never typed.
+  if (const auto problem = mission_problem(project))
+    throw NotFound("project " + project.name + ": " + *problem +
+                   "; choose another mission (swarmdesign set-mission, or Set mission on the Designs tab)");
   const std::uint64_t seed = request.seed ? *request.seed : random_seed();
   std::optional<PreparedDesign> checked;
   if (project.mission && project.budget)  // else Designs::start says what is missing

@@ -1,8 +1,12 @@
 #include "app/projects.hpp"
 
+#include <filesystem>
+#include <system_error>
+
 #include "app/errors.hpp"
 #include "app/inputs.hpp"
 #include "app/user_files.hpp"
+#include "core/bounded_file.hpp"
 #include "missions/catalogue.hpp"
 #include "storage/designs.hpp"
 #include "storage/validation.hpp"
@@ -84,16 +88,70 @@ storage::Project create_configured_project(Home& home, const storage::User& user
   return projects.set_budget(runs);
 }
 
-storage::Project set_mission(Home& home, const storage::User& user, const std::string& mission) {
+namespace {
+
+/// Whether the mission is a file inside `folder`, both read as real paths as far as they exist
+/// (a home reached through a link, a project folder already deleted).
+bool mission_file_within(const std::optional<std::string>& mission, const std::filesystem::path& folder) {
+  if (!mission || !is_mission_file(*mission)) return false;
+  std::error_code ec;
+  const auto file = std::filesystem::weakly_canonical(*mission, ec);
+  if (ec) return false;
+  const auto root = std::filesystem::weakly_canonical(folder, ec);
+  return !ec && is_within(file, root);
+}
+
+/// A running design keeps the mission it started with; changing the project's under it would
+/// make the project name one mission while its design, its progress and the best the page
+/// tests belong to another. Stop first, then change: the CLI and the page alike.
+void require_no_running_design(Home& home, const storage::Project& project) {
+  for (const storage::Design& design : storage::Designs(home.workspace(), project).list())
+    if (design.state == storage::DesignState::running)
+      throw Conflict("design " + std::to_string(design.id) + " of project " + project.name +
+                     " is running; stop it before changing the project's mission");
+}
+
+}  // namespace
+
+storage::Project set_project_mission(Home& home, const storage::User& user, const std::string& project,
+                                     const std::string& mission, const FileScope& files) {
   if (mission.empty()) throw InvalidRequest("no mission chosen");
   storage::Projects projects(home.workspace(), user);
-  projects.require_active();
+  const storage::Project target = projects.get(project);
+  require_no_running_design(home, target);
+  load_requested_mission(mission, files);
+  // Selected only now, so a refusal leaves even the active project as it was (the page names
+  // the project; set-mission acts on the active one, as every later command will).
+  projects.select(target.name);
+  return projects.set_mission(mission_reference(mission));
+}
+
+storage::Project set_mission(Home& home, const storage::User& user, const std::string& mission,
+                             const FileScope& files) {
+  if (mission.empty()) throw InvalidRequest("no mission chosen");
+  const storage::Project active = active_project(home, user);
   try {
-    load_requested_mission(mission);
+    return set_project_mission(home, user, active.name, mission, files);
   } catch (const InvalidRequest& e) {
     throw InvalidRequest(std::string(e.what()) + "; run set-mission without a name to choose from the list");
   }
-  return projects.set_mission(mission_reference(mission));
+}
+
+std::optional<std::string> mission_problem(const storage::Project& project) {
+  // Only a file inside the user's own projects is looked for: whether a file elsewhere exists
+  // is not for a server's user to learn (FileScope's one refusal for missing and forbidden).
+  if (!mission_file_within(project.mission, project.folder.parent_path())) return std::nullopt;
+  std::error_code ec;
+  if (std::filesystem::exists(*project.mission, ec) || ec) return std::nullopt;
+  return "its mission file was deleted";
+}
+
+std::vector<std::string> projects_using_missions_of(const storage::Project& project,
+                                                    const std::vector<storage::Project>& projects) {
+  std::vector<std::string> users;
+  for (const storage::Project& other : projects)
+    if (other.id != project.id && mission_file_within(other.mission, project.folder)) users.push_back(other.name);
+  return users;
 }
 
 }  // namespace sd::app

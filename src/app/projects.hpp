@@ -41,9 +41,24 @@ storage::Project project_or_active(Home& home, const storage::User& user, const 
 
 /// The budget as typed (app::parse_budget's rule).
 storage::Project set_budget(Home& home, const storage::User& user, const std::string& budget);
-/// A catalogue name, or a mission file stored by absolute path (mission_reference's rule), so
-/// the project runs from any folder; InvalidRequest for a mission that cannot be loaded.
-storage::Project set_mission(Home& home, const storage::User& user, const std::string& mission);
+/// Sets project `project`'s mission and makes it the active project (set-mission, the page's Set
+/// mission): a catalogue name, or a mission file that `files` lets the user read, stored by
+/// absolute path (mission_reference's rule) so the project runs from any folder. Everything is
+/// checked before anything is written: NotFound for a project or file that is not the user's,
+/// InvalidRequest for a mission that cannot be loaded, Conflict while a design of it runs.
+storage::Project set_project_mission(Home& home, const storage::User& user, const std::string& project,
+                                     const std::string& mission, const FileScope& files);
+/// set_project_mission on the active project (the CLI's set-mission, Python's configure_project).
+storage::Project set_mission(Home& home, const storage::User& user, const std::string& mission,
+                             const FileScope& files = FileScope::local());
+
+/// Why the project's mission cannot be used, in the words a user reads after the project that
+/// held its mission file was deleted ("its mission file was deleted"); nullopt otherwise.
+std::optional<std::string> mission_problem(const storage::Project& project);
+/// The names of the other projects of `projects` whose mission is a file inside `project`'s
+/// folder: the projects that deleting it leaves without a mission.
+std::vector<std::string> projects_using_missions_of(const storage::Project& project,
+                                                    const std::vector<storage::Project>& projects);
 
 /// A project ready to design in one step (a server's "new project"): name, mission and budget
 /// are all checked before anything is written, so a refusal leaves no half-made project. It

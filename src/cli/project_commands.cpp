@@ -36,6 +36,20 @@ std::string where(const storage::Project& project) {
   return project.cluster ? "cluster " + project.cluster->user + "@" + project.cluster->host : "local";
 }
 
+/// The project's mission as the user reads it: a mission file deleted with the project that
+/// held it says so, rather than failing later as a file that is not theirs.
+std::string mission_text(const storage::Project& project, const std::string& unset) {
+  if (!project.mission) return unset;
+  const auto problem = app::mission_problem(project);
+  return problem ? *project.mission + " (" + *problem + "; choose another with: swarmdesign set-mission)" : *project.mission;
+}
+
+/// The same in show-projects' table, where one word says it.
+std::string table_mission(const storage::Project& project) {
+  if (!project.mission) return "-";
+  return app::mission_problem(project) ? *project.mission + " (deleted)" : *project.mission;
+}
+
 void new_project(const ProjectOptions& options) {
   std::optional<app::ClusterRequest> cluster;
   if (options.cluster_given)
@@ -59,21 +73,24 @@ void show_projects(const ProjectOptions& options) {
     std::cout << "No projects yet. Create one with: swarmdesign new-project NAME\n";
     return;
   }
-  std::size_t name_width = 4, where_width = 5;
+  // Each column as wide as its header or its widest value: a mission file's path is long.
+  std::size_t name_width = 4, where_width = 7, mission_width = 20;
   for (const auto& project : list) {
     name_width = std::max(name_width, project.name.size());
     where_width = std::max(where_width, where(project).size());
+    mission_width = std::max(mission_width, table_mission(project).size());
   }
   const auto row = [&](const std::string& mark, const std::string& name, const std::string& runs_on,
                        const std::string& mission, const std::string& budget) {
     std::cout << mark << std::left << std::setw(static_cast<int>(name_width + 2)) << name
-              << std::setw(static_cast<int>(where_width + 2)) << runs_on << std::setw(22) << mission << budget << '\n';
+              << std::setw(static_cast<int>(where_width + 2)) << runs_on
+              << std::setw(static_cast<int>(mission_width + 2)) << mission << budget << '\n';
   };
   row("  ", "NAME", "RUNS ON", "MISSION", "BUDGET");
   bool any_active = false;
   for (const auto& project : list) {
     any_active = any_active || project.active;
-    row(project.active ? "* " : "  ", project.name, where(project), project.mission.value_or("-"),
+    row(project.active ? "* " : "  ", project.name, where(project), table_mission(project),
         project.budget ? std::to_string(*project.budget) : "-");
   }
   if (any_active) std::cout << "(* active project)\n";
@@ -82,7 +99,7 @@ void show_projects(const ProjectOptions& options) {
 void print_project(const storage::Project& project) {
   std::cout << "Active project: " << project.name << '\n'
             << "  runs on: " << where(project) << '\n'
-            << "  mission: " << project.mission.value_or("(not set; choose one with: swarmdesign set-mission)") << '\n'
+            << "  mission: " << mission_text(project, "(not set; choose one with: swarmdesign set-mission)") << '\n'
             << "  budget:  "
             << (project.budget ? std::to_string(*project.budget) + " simulation runs"
                                : "(not set; set it with: swarmdesign set-budget N)")

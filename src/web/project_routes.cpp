@@ -84,6 +84,14 @@ void add_project_routes(Routes& routes) {
                                                                 app::FileScope::own_projects(call.home, call.user)));
   });
 
+  // set-mission from the page: the CLI's service and checks, under the server's file rule (a
+  // catalogue name or a mission file of the user's own projects).
+  routes.post(project + "/mission", [](Call& call) {
+    return app::project_document(app::set_project_mission(call.home, call.user, call.match(1),
+                                                          text_field(call.body, "mission"),
+                                                          app::FileScope::own_projects(call.home, call.user)));
+  });
+
   routes.get(project + "/status", [](Call& call) {
     std::optional<std::int64_t> design;
     if (call.request.has_param("design")) design = design_number(call.request.get_param_value("design"));
@@ -91,6 +99,8 @@ void add_project_routes(Routes& routes) {
     json doc = app::status_document(status, true);
     doc["running_here"] = call.context.designs.running_here(status.project.id);
     doc["budget"] = status.project.budget ? json(*status.project.budget) : json();
+    const auto problem = app::mission_problem(status.project);
+    doc["mission_problem"] = problem ? json(*problem) : json();
     const auto experiments = app::experiments_progress(call.home, call.user, call.match(1));
     doc["experiments"] = app::experiments_document(experiments);
     for (std::size_t i = 0; i < experiments.size(); ++i)
