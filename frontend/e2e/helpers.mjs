@@ -37,8 +37,9 @@ function webRoot(tmp) {
   return out;
 }
 
-/// Starts a server in a fresh home. users: [{name, projects: [{name, mission, budget}]}].
-export async function startServer({ users = [] } = {}) {
+/// Starts a server in a fresh home. users: [{name, projects: [{name, mission, budget}]}];
+/// serverArgs: more arguments of run-exp (e.g. ['--sign-up', 'invite']).
+export async function startServer({ users = [], serverArgs = [] } = {}) {
   const tmp = mkdtempSync(path.join(os.tmpdir(), 'sd-e2e-'));
   const env = { ...process.env, SWARMDESIGN_HOME: path.join(tmp, 'home') };
   for (const user of users) {
@@ -52,14 +53,14 @@ export async function startServer({ users = [] } = {}) {
     }
   }
   const root = webRoot(tmp);
-  let run = await launchServer(env, root);
+  let run = await launchServer(env, root, serverArgs);
   process.once('exit', () => run.stop());
   return {
     get url() { return run.url; }, env, tmp, output: () => run.output(),
     /// Kills the server as a crash would (SIGKILL) and starts another on the same home.
     async crashAndRestart() {
       await run.kill('SIGKILL');
-      run = await launchServer(env, root);
+      run = await launchServer(env, root, serverArgs);
       return run.url;
     },
     async close() {
@@ -70,9 +71,9 @@ export async function startServer({ users = [] } = {}) {
 }
 
 /// swarmdesign run-exp on a free port, once it answers.
-async function launchServer(env, root) {
+async function launchServer(env, root, serverArgs = []) {
   const port = await freePort();
-  const child = spawn(BIN, ['run-exp', '--port', String(port), '--web-root', root], { env, stdio: ['ignore', 'pipe', 'pipe'] });
+  const child = spawn(BIN, ['run-exp', '--port', String(port), '--web-root', root, ...serverArgs], { env, stdio: ['ignore', 'pipe', 'pipe'] });
   let output = '';
   child.stdout.on('data', (d) => { output += d; });
   child.stderr.on('data', (d) => { output += d; });

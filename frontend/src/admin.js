@@ -4,7 +4,10 @@
 // administrator role, delete with everything it owns (its name typed again). Quotas too (`swarmdesign
 // admin quota`): each account's disk use of its limit and the runs of work it started today of its
 // per-day limit, "(default)" where it follows the server's default; a dialog setting an account's
-// two limits, and a form below the table for the server's default.
+// two limits, and a form below the table for the server's default. Invitations too, for a server
+// run with `--sign-up invite` (`swarmdesign admin invite`): a new one's link shown once, in the
+// dialog that made it (only the code's hash is kept); the list with each one's state, and Revoke
+// for an unused one.
 import { api } from './api.js';
 import { confirmDelete } from './confirm_dialog.js';
 import { bytesText, countText } from './numbers.js';
@@ -118,7 +121,126 @@ export function initAdmin({ me }) {
     refreshQuota();  // the administrator's own line, if their quota or the default changed
   }
 
-  return { shown: refresh };
+  const invitations = initInvitations();
+  return { shown: () => Promise.all([refresh(), invitations.refresh()]) };
+}
+
+/// The Invitations section under the accounts: the server's policy, "Invite…", the list.
+function initInvitations() {
+  const note = (text, testid = 'invite-done') => $('invite-note').replaceChildren(el('div', { testid, text }));
+  const policyText = {
+    invite: 'This server takes sign-ups by invitation (run-exp --sign-up invite): whoever opens an invitation\'s link signs up once, before it expires.',
+    open: 'This server takes sign-ups from anyone who reaches it (run-exp --sign-up open): no invitation is needed.',
+    closed: 'Sign-up is closed on this server (run-exp --sign-up closed, the default): an invitation works once it runs with --sign-up invite.',
+  };
+
+  async function revoke(id) {
+    const sure = await confirmDelete({ title: `Revoke invitation ${id}?`, action: 'Revoke',
+      text: 'Its link no longer signs anyone up. Whoever has it will need another.' });
+    if (!sure) return;
+    try {
+      await api(`/api/admin/invitations/${id}/revoke`, { body: {}, quiet: true });
+      note(`invitation ${id} revoked`);
+    } catch (e) {
+      note(e.message, 'invite-error');
+    }
+    await refresh();
+  }
+
+  function row(i) {
+    const open = i.state === 'open';
+    return el('tr', { testid: `invitation-row-${i.id}` },
+      el('td', { class: 'num', text: String(i.id) }),
+      el('td', { class: `invitation-state ${i.state}`, testid: `invitation-state-${i.id}`, text: i.state }),
+      el('td', { text: i.created_by ?? '(a deleted account)' }),
+      el('td', { class: 'when', text: when(i.expires_at) }),
+      el('td', { testid: `invitation-used-${i.id}`,
+        text: i.state === 'used' ? `${i.used_by ?? '(a deleted account)'}, ${when(i.used_at)}` : '' }),
+      el('td', {}, ...(open ? [el('button', { type: 'button', class: 'small danger', testid: `invitation-revoke-${i.id}`,
+        text: 'Revoke', onclick: () => revoke(i.id) })] : [])));
+  }
+
+  async function refresh() {
+    try {
+      const [list, policy] = await Promise.all([api('/api/admin/invitations', { quiet: true }),
+        api('/api/sign-up', { quiet: true }).then((a) => a.policy).catch(() => 'closed')]);
+      $('invite-policy').textContent = policyText[policy] || policyText.closed;
+      $('admin-invitations').replaceChildren(...(list.length ? list.map(row)
+        : [el('tr', {}, el('td', { colspan: '6', class: 'muted', testid: 'invitations-none', text: 'No invitations yet.' }))]));
+    } catch (e) {
+      note(e.message, 'invite-error');
+    }
+  }
+
+  $('invite-button').onclick = () => inviteDialog(async (days) => {
+    const made = await api('/api/admin/invitations', { body: { days }, quiet: true });
+    $('invite-note').replaceChildren();
+    await refresh();
+    return made;
+  });
+  return { refresh };
+}
+
+/// "Invite…": how many days the invitation lasts; then, in the same dialog, its link, shown only now.
+function inviteDialog(make) {
+  const days = el('input', { type: 'number', min: '1', max: '90', step: '1', value: '7', testid: 'invite-days', required: '' });
+  const message = el('p', { class: 'small', testid: 'invite-message' });
+  const ok = el('button', { type: 'submit', class: 'primary', testid: 'invite-ok', text: 'Make invitation' });
+  const cancel = el('button', { type: 'button', testid: 'invite-cancel', text: 'Cancel' });
+  const form = el('form', { class: 'stack' }, el('strong', { text: 'Invite someone to sign up' }),
+    el('p', { class: 'muted small', text: 'One person signs up with it, once, before it expires. You will see its link only once, right after it is made.' }),
+    el('label', { class: 'inline invite-days' }, 'Valid for', days, el('span', { class: 'muted small', text: 'days (1 to 90)' })),
+    message, el('div', { class: 'row' }, cancel, ok));
+  const dialog = el('dialog', { class: 'confirm-dialog invite-dialog', testid: 'invite-dialog' }, form);
+  form.addEventListener('submit', async (e) => {
+    e.preventDefault();
+    message.classList.remove('error');
+    const n = Number(days.value);
+    if (!Number.isInteger(n) || n < 1 || n > 90) {
+      message.classList.add('error');
+      message.textContent = 'days: a whole number of 1 to 90';
+      return;
+    }
+    ok.disabled = true;
+    try {
+      shown(await make(n));
+    } catch (err) {
+      message.classList.add('error');
+      message.textContent = err.message;
+      ok.disabled = false;
+    }
+  });
+  // The new invitation: its link (copy), its code, when it expires; gone once the dialog closes.
+  function shown(made) {
+    const link = `${location.origin}/#invite=${made.code}`;
+    const field = el('input', { readonly: '', value: link, testid: 'invite-link', 'aria-label': 'invitation link',
+      onfocus: (e) => e.target.select() });
+    const copied = el('span', { class: 'muted small', testid: 'invite-copied', role: 'status' });
+    const copy = el('button', { type: 'button', testid: 'invite-copy', text: 'Copy', onclick: async () => {
+      field.focus();
+      field.select();
+      let done = false;
+      try { await navigator.clipboard.writeText(link); done = true; } catch { done = document.execCommand && document.execCommand('copy'); }
+      copied.textContent = done ? 'copied' : 'select the link and copy it';
+    } });
+    const close = el('button', { type: 'button', class: 'primary', testid: 'invite-close', text: 'Done' });
+    close.addEventListener('click', () => dialog.close());
+    form.replaceWith(el('div', { class: 'stack' },
+      el('strong', { text: `Invitation ${made.id}` }),
+      el('p', { class: 'small', text: `Send this link to the person you invite; it signs up one account until ${when(made.expires_at)}.` }),
+      el('div', { class: 'row invite-link-row' }, field, copy, copied),
+      el('p', { class: 'small' }, 'Code: ', el('code', { testid: 'invite-code', text: made.code })),
+      el('p', { class: 'small invite-once', testid: 'invite-once',
+        text: 'Shown only now: the server keeps only a hash of the code. Lost, revoke it and make another.' }),
+      el('div', { class: 'row' }, close)));
+    field.focus();
+  }
+  cancel.addEventListener('click', () => dialog.close());
+  dialog.addEventListener('close', () => dialog.remove());
+  document.body.append(dialog);
+  dialog.showModal();
+  days.focus();
+  days.select();
 }
 
 /// "1.2 MB of 100.0 MB (default)": what is used of the limit in force; full when at or over it.

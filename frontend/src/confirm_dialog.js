@@ -3,7 +3,8 @@
 // the user confirms; Escape, Cancel or a click outside resolve false.
 import { el } from './properties.js';
 
-export function confirmDelete({ title, text, typeToConfirm = null, action = 'Delete' }) {
+// `warning`, when given, is said apart from the text: what the deletion breaks elsewhere.
+export function confirmDelete({ title, text, warning = null, typeToConfirm = null, action = 'Delete' }) {
   return new Promise((resolve) => {
     const input = typeToConfirm === null ? null
       : el('input', { testid: 'confirm-name', autocomplete: 'off', placeholder: typeToConfirm, 'aria-label': `type ${typeToConfirm} to confirm` });
@@ -12,6 +13,7 @@ export function confirmDelete({ title, text, typeToConfirm = null, action = 'Del
     const form = el('form', { method: 'dialog', class: 'stack' },
       el('strong', { text: title }),
       el('p', { class: 'small', text }),
+      ...(warning ? [el('p', { class: 'small confirm-warning', testid: 'confirm-warning', text: warning })] : []),
       ...(input ? [el('label', { text: `Type ${typeToConfirm} to confirm` }), input] : []),
       el('div', { class: 'row' }, cancel, ok));
     const dialog = el('dialog', { class: 'confirm-dialog', testid: 'confirm-dialog' }, form);

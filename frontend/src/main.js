@@ -92,7 +92,9 @@ whenUnauthorized(() => showSignIn(startApp));
   try {
     const session = await api('/api/session', { quiet: true });
     setCsrf(session.csrf);
+    const invited = location.hash.startsWith('#invite=');  // an invitation link, opened while signed in
     await startApp(session.user);
+    if (invited) showError(`You are signed in as ${session.user}: to sign up with this invitation, sign out and open its link again.`);
   } catch (e) {
     if (e.status === 401 || e.status === 0) showSignIn(startApp);
     else showError(e.message);

@@ -47,7 +47,7 @@ export function initMissionUpload({ onUploaded }) {
     try {
       const mission = await api(`/api/projects/${encodeURIComponent(project)}/missions`,
         { body: { name: $('upload-name').value, text: await file.text() }, quiet: true });
-      say(`added ${mission.title} to ${project}: choose it for a new project or try it in Exec`, 'done');
+      say(`added ${mission.title} to ${project}: choose it for a project (Designs tab, Set mission) or try it in Exec`, 'done');
       $('mission-upload').reset();
       clearError();  // a refusal shown before is stale
       refreshQuota();

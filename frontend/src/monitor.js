@@ -15,12 +15,23 @@ import { initExperiments } from './experiments.js';
 import { readable } from './numbers.js';
 import { download } from './download.js';
 import { refreshQuota } from './quota.js';
+import { clearError } from './toast.js';
 
 const $ = (id) => document.getElementById(id);
+
+/// The delete dialog's warning: the projects whose mission is a file of the one deleted.
+function usedByWarning(name, users) {
+  const one = users.length === 1;
+  return `${one ? 'Project' : 'Projects'} ${users.join(', ')} ${one ? 'uses a mission file' : 'use mission files'} of ${name}: ` +
+    `deleted with it, ${one ? 'it' : 'they'} will say "its mission file was deleted" and design nothing until you choose another mission.`;
+}
 
 export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () => {} }) {
   let selected = null;
   let projectBudgets = new Map();
+  let projectInfo = new Map();  // name -> the project's document as /api/projects last gave it
+  let missionChoices = [];  // /api/missions: what a project's mission may be set to
+  let missionShown = null;  // what the Set mission form was last filled for
   let listed = null;  // {id, state} of the newest row of the design list as last drawn
   let timer = null;
   let status = null;
@@ -41,15 +52,40 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
     const answer = await api('/api/projects');
     const projects = Array.isArray(answer) ? answer : answer.projects || [];
     projectBudgets = new Map(projects.map((p) => [p.name, p.budget]));
+    projectInfo = new Map(projects.map((p) => [p.name, p]));
     if (selected && projectBudgets.has(selected) && !$('design-budget').value) form.setBudget(projectBudgets.get(selected));
     const list = $('project-list');
     list.replaceChildren(...projects.map((p) => el('li', {
       class: p.name === selected ? 'selected' : '', testid: `project-${p.name}`,
       onclick: () => select(p.name),
-    }, el('span', { text: p.name }), el('span', { class: 'muted small', text: `${p.mission ? shortName({ name: p.mission }) : 'no mission'} · ${p.budget ?? '–'}`, title: p.mission || '' }))));
+    }, el('span', { text: p.name }), el('span', { class: `muted small${p.mission_problem ? ' mission-deleted' : ''}`,
+      text: `${p.mission_problem ? 'mission file deleted' : p.mission ? shortName({ name: p.mission }) : 'no mission'} · ${p.budget ?? '–'}`,
+      title: p.mission_problem ? `${p.mission}: ${p.mission_problem}` : p.mission || '' }))));
     if (!projects.length) list.append(el('li', { class: 'muted small', text: 'no project yet' }));
     if (!selected && projects.length) select(projects[0].name);
+    showProjectMission();
     return projects;
+  }
+
+  /// The selected project's mission in the Set mission form (set-mission): any mission of the
+  /// list. A mission file deleted with the project that held it is said so, the choice left open.
+  function showProjectMission() {
+    const p = selected ? projectInfo.get(selected) : null;
+    $('project-mission-form').hidden = !p;
+    if (!p) return;
+    const key = JSON.stringify([p.name, p.mission, p.mission_problem, missionChoices.map((m) => m.name)]);
+    if (key === missionShown) return;  // keep what the user is choosing
+    missionShown = key;
+    const current = p.mission_problem ? null : p.mission;
+    const listed = missionChoices.some((m) => m.name === current);
+    const options = missionChoices.map((m) => el('option', { value: m.name, text: `${shortName(m)} — ${m.title}`, title: m.name }));
+    if (!listed) options.unshift(el('option', { value: '', text: current ? `${shortName({ name: current })} (not in the list)` : '— choose a mission —' }));
+    $('project-set-mission').replaceChildren(...options);
+    $('project-set-mission').value = listed ? current : '';
+    const note = $('project-mission-note');
+    note.textContent = p.mission_problem ? `${shortName({ name: p.mission })}: ${p.mission_problem}. Choose another mission and Set mission.` : '';
+    note.className = p.mission_problem ? 'problem' : '';
+    note.title = p.mission_problem ? p.mission : '';
   }
 
   function select(name) {
@@ -63,6 +99,7 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
     $('monitor-project').textContent = name;
     $('project-delete').disabled = false;
     form.setBudget(projectBudgets.get(name));
+    showProjectMission();
     for (const li of $('project-list').children) li.classList.toggle('selected', li.dataset.testid === `project-${name}`);
     graph.elements().remove();
     poll();
@@ -182,6 +219,7 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
       $('argos-result').replaceChildren();
       $('design-start').disabled = false;
       $('design-stop').disabled = true;
+      allowMissionChange(true);
       showResumable(null);
       return;
     }
@@ -206,6 +244,7 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
     const latestState = opened === null ? design.state : listed && listed.state;
     $('design-start').disabled = latestState === 'running';
     $('design-stop').disabled = latestState !== 'running';
+    allowMissionChange(latestState !== 'running');
     showResumable(opened === null ? design : null);
 
     const note = opened === null ? '' : opened.experiment ? `Showing the design experiment ${opened.experiment} is making. ` : `Showing earlier design #${design.id}. `;
@@ -244,6 +283,13 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
         .then((answer) => { if (bestDrawn === best) { renderModel(graph, answer.software, { relayout: true }); graph.fit(undefined, 10); } })
         .catch(() => {});
     }
+  }
+
+  /// The server refuses a new mission while a design runs (it keeps the one it started with).
+  function allowMissionChange(allowed) {
+    $('project-set-mission-button').disabled = !allowed;
+    $('project-set-mission-button').title = allowed ? "make it the project's mission (swarmdesign set-mission)"
+      : 'a design of this project is running: stop it first (it keeps the mission it started with)';
   }
 
   function showConvergence(any) {
@@ -295,6 +341,9 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
       const was = status && status.design && status.design.state;
       status = s;
       renderStatus(s);
+      // Its mission file deleted meanwhile (from another tab or the CLI): the form says so.
+      const known = projectInfo.get(name);
+      if (known && s.mission_problem !== undefined && (s.mission_problem || null) !== (known.mission_problem || null)) refreshProjects().catch(() => {});
       running = !!(s.design && s.design.state === 'running') || (s.experiments || []).some((e) => e.state === 'running');
       const stale = opened !== null ? false
         : s.design ? !listed || listed.id !== s.design.id || listed.state !== s.design.state : listed !== null;
@@ -346,6 +395,25 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
     fastUntil = Date.now() + 10000;
     refreshDesigns();
     refreshProjects().catch(() => {});  // the budget the form may have set
+    poll();
+  });
+  $('project-mission-form').addEventListener('submit', async (e) => {
+    e.preventDefault();
+    const name = selected;
+    if (!name) return;
+    const note = $('project-mission-note');
+    let project;
+    try {
+      project = await api(`/api/projects/${encodeURIComponent(name)}/mission`, { body: { mission: $('project-set-mission').value }, quiet: true });
+    } catch (err) {
+      note.textContent = err.message;
+      note.className = 'error';
+      return;
+    }
+    clearError();  // a refused Start for want of a mission is stale
+    await refreshProjects();
+    note.textContent = `mission set to ${shortName({ name: project.mission })}`;
+    note.className = 'done';
     poll();
   });
   $('design-fresh').addEventListener('change', () => { if (status) showResumable(status.design); });
@@ -410,8 +478,13 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
   $('project-delete').addEventListener('click', async () => {
     const name = selected;
     if (!name) return;
+    // Asked now, not from the list drawn earlier: another tab may have set a mission since.
+    const current = (await api('/api/projects', { quiet: true }).catch(() => [])).find((p) => p.name === name) || {};
+    const users = current.mission_used_by || [];
     const yes = await confirmDelete({ title: `Delete project ${name}?`, typeToConfirm: name,
-      text: 'Its designs, experiments, reports, uploaded missions and saved control software are deleted for good. Your other projects stay.' });
+      text: 'Its designs, experiments, reports, uploaded missions and saved control software are deleted for good. ' +
+        `Your other projects stay${users.length ? ', but not the mission files they use from this one' : ''}.`,
+      warning: users.length ? usedByWarning(name, users) : null });
     if (!yes) return;
     try { await api(`/api/projects/${encodeURIComponent(name)}/delete`, { body: { confirm: name } }); } catch { return; }
     selected = null;
@@ -422,7 +495,9 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
     const left = await refreshProjects();
     if (!left.length) renderStatus({});
     refreshQuota();
-    onProjectsChanged();
+    await onProjectsChanged();
+    // The first project left without a mission, to choose it another one.
+    if (users.length && left.some((p) => p.name === users[0])) select(users[0]);
   });
   // The best shown, for ARGoS3-AutoMoDe: the mission's .argos file downloads, and the command
   // line that runs it (the string its flavour's code base reads) is shown to copy.
@@ -454,6 +529,8 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
 
   return {
     setMissions(list) {
+      missionChoices = list;
+      showProjectMission();
       $('project-mission').replaceChildren(...list.map((m) => el('option', { value: m.name, text: `${shortName(m)} — ${m.title}`, title: m.name })));
     },
     shown() { visible = true; refreshProjects().catch(() => {}); graph.resize(); },
