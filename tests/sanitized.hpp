@@ -1,7 +1,8 @@
 #pragma once
 // Whether this test (and so the swarmdesign binary of its tree) is built under a sanitizer.
-// Work sized to last a while in Release lasts about ten times longer there: a test that needs
-// a design still running can ask for a tenth of the runs and still checks that it was.
+// Work sized to last a while in Release lasts about ten times longer there: the design tests'
+// missions are shorter there (workflow/design_helpers.hpp), and a test that needs a design
+// still running can ask for fewer runs and still check that it was.
 
 namespace sd::test {
 

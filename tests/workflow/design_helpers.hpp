@@ -9,10 +9,18 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sanitized.hpp"
+
 namespace sd::test {
 
+/// The design tests' runs: 10 simulated seconds in Release; 2 under a sanitizer, which makes
+/// each tick about ten times slower. Every tick runs the same code, so what a sanitizer checks
+/// is unchanged, and a test that needs a design still running waits longer there than in
+/// Release all the same (docs/hardening.md).
+inline constexpr int kShortMissionSeconds = kSanitized ? 2 : 10;
+
 /// missions/aac.json with "duration" set to `seconds`, written as folder/aac-short.json.
-std::filesystem::path write_short_mission(const std::filesystem::path& folder, int seconds = 10);
+std::filesystem::path write_short_mission(const std::filesystem::path& folder, int seconds = kShortMissionSeconds);
 
 /// The design's checkpoint counter (0 while it has none), read as `status` would.
 std::int64_t checkpoint_step(const std::filesystem::path& design_folder);

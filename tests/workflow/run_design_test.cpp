@@ -138,7 +138,9 @@ TEST_F(run_design, StatusReadsADetachedDesignWhileItRuns) {
   // Long enough to be still running when the refusals below are tried (race steps now go out
   // in wider batches, and a 4000-run design could end between the status read and them in
   // Release). Under a sanitizer each run takes about ten times longer, so a tenth of the runs
-  // lasts as long; reads_while_running below checks that it did.
+  // lasts as long; reads_while_running below checks that it did. Runs of 10 s there too: the
+  // sanitizer trees' shorter default would end it four times sooner.
+  write_short_mission(scratch(), 10);
   project_with_budget(kSanitized ? 4000 : 30000);
   const auto started = run({"run-design", "--detach", "--fsm", "--chocolate", "--seed", "1", "--threads", "1"});
   ASSERT_EQ(started.exit_code, 0) << started.err;
