@@ -122,7 +122,10 @@ def test_projects_are_made_configured_and_deleted_as_the_cli_does(account):
         made = account.new_project("py-made", "aac", 1500)
         assert made["name"] == "py-made" and made["mission"] == "aac" and made["budget"] == 1500
         listed = {p["name"]: p for p in json.loads(run_cli("show-projects", "--json"))["projects"]}
-        assert listed["py-made"] == made
+        # The listing's entry is the project's document, plus what only a listing knows: which
+        # other projects use its mission files.
+        assert {key: listed["py-made"][key] for key in made} == made
+        assert listed["py-made"]["mission_used_by"] == []
         # Refused before anything is written: a bad budget, a taken name, a mission that is not one.
         with pytest.raises(sd.InvalidRequestError, match="budget"):
             account.new_project("py-bad", "aac", "lots")
