@@ -46,9 +46,16 @@ std::int64_t account_id(Home& home, const std::string& name) { return storage::a
 std::uint64_t account_disk_bytes(Home& home, const storage::User& user) {
   const fs::path folder = home.workspace().resolve(storage::Workspace::projects_folder(user)).parent_path();
   std::uint64_t bytes = 0;
-  std::error_code ec;
-  for (auto it = fs::recursive_directory_iterator(folder, ec); !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
-    if (it->symlink_status(ec).type() == fs::file_type::regular) bytes += it->file_size(ec);
+  std::error_code walk;
+  for (auto it = fs::recursive_directory_iterator(folder, walk); !walk && it != fs::recursive_directory_iterator();
+       it.increment(walk)) {
+    // A file a running design replaces as it is read is skipped, not the end of the walk: one
+    // error code for both would stop the count there and let the account pass its limit.
+    std::error_code entry;
+    if (it->symlink_status(entry).type() != fs::file_type::regular) continue;
+    const std::uintmax_t size = it->file_size(entry);
+    if (!entry) bytes += size;
+  }
   return bytes;
 }
 
@@ -68,8 +75,11 @@ void require_room_for_file(Home& home, const storage::User& user, const fs::path
   const auto limit = storage::limits_in_force(home.workspace().database(), user.id).disk_bytes;
   if (!limit) return;
   std::error_code ec;
-  const std::uint64_t replaced =
-      !file.empty() && fs::symlink_status(file, ec).type() == fs::file_type::regular ? fs::file_size(file, ec) : 0;
+  std::uint64_t replaced = 0;
+  if (!file.empty() && fs::symlink_status(file, ec).type() == fs::file_type::regular) {
+    const std::uintmax_t size = fs::file_size(file, ec);
+    replaced = ec ? 0 : size;  // unreadable: counted as nothing replaced, never as room
+  }
   if (bytes > 0 && bytes <= replaced) return;  // no growth: allowed even over the limit
   const std::uint64_t used = account_disk_bytes(home, user), cap = static_cast<std::uint64_t>(*limit);
   const std::uint64_t more = bytes - replaced;
