@@ -10,13 +10,27 @@
 //            its designs list every fifth poll; the designs are small ones started at set-up
 // It counts per request kind the answers, the expected refusals, the errors (a connection
 // failure, a timeout, a status or body that is not the expected one, an Exec score that differs
-// from an earlier run of the same seed) and the latency's p50, p99 and max; it samples the
+// from an earlier run of the same seed) and the latency's p50, p95, p99 and max; it samples the
 // server's RSS (/proc) every second and says whether it stays flat after the warm-up.
 // Run: ./build/bench/load_bench [--clients 200] [--seconds 60] [--json]   (see --help)
+//
+// --lab is another scenario (issue #56's "20 accounts with 2 designs each on a 2-core server,
+// sign-in and status polls answer within 1 s at the 95th percentile, quotas holding"): N
+// accounts (20), the first the administrator, who sets the server's default quota of runs per
+// day (`admin quota --default`) to exactly the designs each account starts (2 x the budget).
+// Each account makes its projects and starts a design in each, is refused a third by the runs
+// quota (409 "runs quota: ...") and reads its use from /api/quota; the designs are then
+// stopped and resumed (a resume costs no quota), as many as the server takes at once (its own
+// limit of designs refuses the rest). Then, for the measured time, each account has one tab
+// polling its designs' status every second and one signing in, reading the session and
+// signing out every 2-5 s; at the end the third design is refused again and the quota read
+// again. Verdict: sign-in's and the status polls' p95 <= 1000 ms.
+// Run: ./build/bench/load_bench --lab [--accounts 20] [--designs-per-account 2] [--seconds 60]
 #include <CLI/CLI.hpp>
 #include <httplib.h>
 #include <nlohmann/json.hpp>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -60,11 +74,28 @@ struct Options {
   bool keep_alive = true;  // as browsers
   bool json = false;
   std::string binary = SWARMDESIGN_BINARY;
+  // --lab
+  bool lab = false;
+  int accounts = 20;
+  int designs_per_account = 2;
+  long long budget = 200000;
+  std::vector<double> lab_signin_pause{2, 5};  // seconds, drawn uniformly between the two
+  double p95_target_ms = 1000;
+  int running_designs = -1;  // designs resumed for the measured time; -1: as many as the server takes
 };
 
-enum Kind { kSignIn, kSession, kSignOut, kParse, kExecStart, kExecFirstFrame, kExecEnd, kStatus, kDesigns, kKinds };
-const char* const kKindNames[kKinds] = {"sign-in",         "session",       "sign-out",       "parse",  "exec-start",
-                                        "exec-first-frame", "exec-whole-run", "monitor-status", "monitor-designs"};
+enum Kind {
+  kSignIn, kSession, kSignOut, kParse, kExecStart, kExecFirstFrame, kExecEnd, kStatus, kDesigns,
+  // --lab's set-up and checks
+  kProject, kDesignStart, kOverQuota, kQuota, kDesignStop, kDesignResume,
+  kKinds
+};
+const char* const kKindNames[kKinds] = {"sign-in",         "session",        "sign-out",       "parse",
+                                        "exec-start",      "exec-first-frame", "exec-whole-run", "monitor-status",
+                                        "monitor-designs", "project-create", "design-start",   "design-over-quota",
+                                        "quota-read",      "design-stop",    "design-resume"};
+/// The kinds of the first scenario, in its table's order.
+const std::vector<Kind> kLoadKinds{kSignIn, kSession, kSignOut, kParse, kExecStart, kExecFirstFrame, kExecEnd, kStatus, kDesigns};
 
 /// What every client reports, per request kind.
 class Recorder {
@@ -89,7 +120,8 @@ class Recorder {
     for (long e : errors_) n += e;
     return n;
   }
-  json document() const;
+  /// The figures of `kinds`.
+  json document(const std::vector<Kind>& kinds) const;
 
  private:
   mutable std::mutex mutex_;
@@ -106,15 +138,16 @@ double percentile(std::vector<double> v, double p) {
   return v[std::min(v.size() - 1, rank == 0 ? 0 : rank - 1)];  // nearest rank
 }
 
-json Recorder::document() const {
+json Recorder::document(const std::vector<Kind>& shown) const {
   std::lock_guard lock(mutex_);
   json kinds = json::object();
-  for (int k = 0; k < kKinds; ++k) {
+  for (const Kind k : shown) {
     const std::vector<double>& v = ms_[k];
     kinds[kKindNames[k]] = {{"answers", v.size()},
                             {"refused", refused_[k]},
                             {"errors", errors_[k]},
                             {"p50_ms", percentile(v, 50)},
+                            {"p95_ms", percentile(v, 95)},
                             {"p99_ms", percentile(v, 99)},
                             {"max_ms", v.empty() ? 0.0 : *std::max_element(v.begin(), v.end())}};
   }
@@ -157,6 +190,35 @@ class Server {
     const std::string command = std::string("printf '%s\\n' '") + kPassword + "' | SWARMDESIGN_HOME='" + home_.string() +
                                 "' '" + binary_ + "' sign-up " + name + " --password-stdin >/dev/null";
     if (std::system(command.c_str()) != 0) throw std::runtime_error("sign-up " + name + " failed");
+  }
+
+  /// `swarmdesign ARGS` as `user` (signed in first, as a person at the terminal would), with the
+  /// server's home; its standard output. Throws when either command fails.
+  std::string cli(const std::string& user, const std::string& args) const {
+    const std::string env = "SWARMDESIGN_HOME='" + home_.string() + "' '" + binary_ + "' ";
+    const std::string command = std::string("printf '%s\\n' '") + kPassword + "' | " + env + "sign-in " + user +
+                                " --password-stdin >/dev/null && " + env + args;
+    FILE* pipe = ::popen(command.c_str(), "r");
+    if (!pipe) throw std::runtime_error("cannot run " + args);
+    std::string out;
+    char buffer[4096];
+    for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) out.append(buffer, n);
+    if (::pclose(pipe) != 0) throw std::runtime_error("`swarmdesign " + args + "` as " + user + " failed");
+    return out;
+  }
+
+  /// The server's CPU time so far (user + system), in seconds; 0 once it has gone.
+  double cpu_seconds() const {
+    std::ifstream in("/proc/" + std::to_string(pid_) + "/stat");
+    std::string stat((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::size_t paren = stat.rfind(')');
+    if (paren == std::string::npos) return 0;
+    std::istringstream fields(stat.substr(paren + 2));
+    std::string field;
+    double ticks = 0;
+    for (int i = 3; i <= 15 && fields >> field; ++i)  // fields 14 and 15: utime, stime
+      if (i >= 14) ticks += std::stod(field);
+    return ticks / static_cast<double>(::sysconf(_SC_CLK_TCK));
   }
 
   void start() {
@@ -248,22 +310,25 @@ struct Load {
 
   bool running() const { return Clock::now() < end; }
   /// Sleeps about `seconds` (±25 %, so that the tabs do not march in step), never past the end.
-  void pause(double seconds, std::mt19937& random) const {
-    std::uniform_real_distribution<double> jitter(0.75, 1.25);
+  void pause(double seconds, std::mt19937& random) const { pause_between(0.75 * seconds, 1.25 * seconds, random); }
+  /// Sleeps between `least` and `most` seconds (uniformly), never past the end.
+  void pause_between(double least, double most, std::mt19937& random) const {
+    std::uniform_real_distribution<double> seconds(least, most);
     const auto until = std::min(end, Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                                         std::chrono::duration<double>(seconds * jitter(random))));
+                                                         std::chrono::duration<double>(seconds(random))));
     std::this_thread::sleep_until(until);
   }
 };
 
-void sign_in_tab(Load& load, const std::string& name, std::mt19937& random) {
+/// Signs `name` in, reads the session and signs out, again and again, `least` to `most` seconds apart.
+void sign_in_tab(Load& load, const std::string& name, double least, double most, std::mt19937& random) {
   auto c = connect(load.port, load.options.keep_alive);
   while (load.running()) {
     auto start = Clock::now();
     const auto in = c->Post("/api/sign-in", json{{"name", name}, {"password", kPassword}}.dump(), "application/json");
     if (!in || in->status != 200 || in->get_header_value("Set-Cookie").empty()) {
       load.recorder.error(kSignIn, describe(in));
-      load.pause(load.options.signin_pause, random);
+      load.pause_between(least, most, random);
       continue;
     }
     load.recorder.ok(kSignIn, ms_since(start));
@@ -281,7 +346,7 @@ void sign_in_tab(Load& load, const std::string& name, std::mt19937& random) {
     const auto out = c->Post("/api/sign-out", s.headers(), "{}", "application/json");
     if (out && out->status == 200) load.recorder.ok(kSignOut, ms_since(start));
     else load.recorder.error(kSignOut, describe(out));
-    load.pause(load.options.signin_pause, random);
+    load.pause_between(least, most, random);
   }
 }
 
@@ -398,6 +463,19 @@ void monitor_tab(Load& load, const Session& s, const std::string& project, std::
   }
 }
 
+/// The table of `kinds` (and the error messages) of a document of Recorder::document.
+void print_kinds(const json& doc, const std::vector<Kind>& kinds) {
+  std::printf("%-17s %8s %8s %7s %9s %9s %9s %9s\n", "kind", "answers", "refused", "errors", "p50 ms", "p95 ms",
+              "p99 ms", "max ms");
+  for (const Kind k : kinds) {
+    const json& r = doc["kinds"][kKindNames[k]];
+    std::printf("%-17s %8ld %8ld %7ld %9.1f %9.1f %9.1f %9.1f\n", kKindNames[k], r["answers"].get<long>(),
+                r["refused"].get<long>(), r["errors"].get<long>(), r["p50_ms"].get<double>(), r["p95_ms"].get<double>(),
+                r["p99_ms"].get<double>(), r["max_ms"].get<double>());
+  }
+  for (const auto& [what, n] : doc["error_messages"].items()) std::printf("  %ld x %s\n", n.get<long>(), what.c_str());
+}
+
 /// The floors (lowest samples) of the first and last quarter after the warm-up; flat when the
 /// last is within 5 % (or 8 MiB) of the first. Floors, because any sample may catch up to four
 /// sign-ins' Argon2id buffers (64 MiB each, freed at once), which swing even a quarter's median
@@ -474,7 +552,7 @@ int run(const Options& o) {
       const auto idx = static_cast<std::size_t>(i);
       const Kind kind = i < signin ? kSignIn : i < signin + parse ? kParse : i < signin + parse + exec ? kExecStart : kStatus;
       try {
-        if (i < signin) sign_in_tab(load, "signin" + std::to_string(i), random);
+        if (i < signin) sign_in_tab(load, "signin" + std::to_string(i), 0.75 * o.signin_pause, 1.25 * o.signin_pause, random);
         else if (i < signin + parse) parse_tab(load, editor_sessions[idx % editor_sessions.size()], random);
         else if (i < signin + parse + exec) {
           const auto e = static_cast<std::size_t>(i - signin - parse);
@@ -507,7 +585,7 @@ int run(const Options& o) {
     setup->Post("/api/projects/load/designs/stop", s.headers(), "{}", "application/json");
   const std::string exit = server.stop();
 
-  json doc = load.recorder.document();
+  json doc = load.recorder.document(kLoadKinds);
   doc["clients"] = {{"total", o.clients}, {"sign-in", signin}, {"parse", parse}, {"exec", exec}, {"monitor", monitor}};
   doc["seconds"] = o.seconds;
   doc["held_seconds"] = held;
@@ -529,14 +607,7 @@ int run(const Options& o) {
   } else {
     std::printf("%d clients (%d sign-in, %d parse, %d exec, %d monitor) for %.0f s, keep-alive %s, %d designs running\n",
                 o.clients, signin, parse, exec, monitor, held, o.keep_alive ? "on" : "off", designs);
-    std::printf("%-17s %8s %8s %7s %9s %9s %9s\n", "kind", "answers", "refused", "errors", "p50 ms", "p99 ms", "max ms");
-    for (int k = 0; k < kKinds; ++k) {
-      const json& r = doc["kinds"][kKindNames[k]];
-      std::printf("%-17s %8ld %8ld %7ld %9.1f %9.1f %9.1f\n", kKindNames[k], r["answers"].get<long>(),
-                  r["refused"].get<long>(), r["errors"].get<long>(), r["p50_ms"].get<double>(),
-                  r["p99_ms"].get<double>(), r["max_ms"].get<double>());
-    }
-    for (const auto& [what, n] : doc["error_messages"].items()) std::printf("  %ld x %s\n", n.get<long>(), what.c_str());
+    print_kinds(doc, kLoadKinds);
     std::printf("Exec runs ended: %ld; errors: %ld; server %s\n", load.runs_ended.load(), errors, exit.c_str());
     std::printf("server RSS (MiB) / threads, one sample per second:\n");
     for (std::size_t i = 0; i < rss_mib.size(); ++i)
@@ -553,6 +624,375 @@ int run(const Options& o) {
   }
   const bool flat = doc["rss"]["flat"].is_boolean() && doc["rss"]["flat"].get<bool>();
   return errors == 0 && flat && exit == "exit 0" ? 0 : 1;
+}
+
+// --- The lab (--lab, issue #56) -------------------------------------------------------------
+
+/// An answer of the API: its status (0: none), its JSON body (discarded when not JSON), how it
+/// reads in an error message and how long it took.
+struct Answer {
+  int status = 0;
+  json body;
+  std::string text;
+  double ms = 0;
+  std::string error() const { return body.is_object() && body.contains("error") ? body.value("error", "") : ""; }
+};
+
+Answer ask(httplib::Client& c, const Session& s, const std::string& path, const json* post = nullptr) {
+  const auto start = Clock::now();
+  const auto r = post ? c.Post(path.c_str(), s.headers(), post->dump(), "application/json") : c.Get(path.c_str(), s.headers());
+  Answer a;
+  a.ms = ms_since(start);
+  a.text = describe(r);
+  if (r) {
+    a.status = r->status;
+    a.body = json::parse(r->body, nullptr, false);
+  }
+  return a;
+}
+Answer post(httplib::Client& c, const Session& s, const std::string& path, const json& body) { return ask(c, s, path, &body); }
+
+/// One account of the lab: its designs' projects ("design1", "design2", ...), their ids, and
+/// which of them run during the measured time.
+struct LabAccount {
+  std::string name;
+  Session session;
+  std::vector<std::string> projects;
+  std::vector<std::int64_t> design_ids;
+  std::vector<char> running;  // written before the tabs start, read by them
+};
+
+/// The design monitor of one account: every `poll` seconds each of its designs' status, as the
+/// page's monitor polls the design it shows. A design resumed for the measured time must be
+/// running in this server at every poll.
+void lab_monitor_tab(Load& load, const LabAccount& a, std::mt19937& random) {
+  auto c = connect(load.port, load.options.keep_alive);
+  while (load.running()) {
+    for (std::size_t d = 0; d < a.projects.size() && load.running(); ++d) {
+      const Answer r = ask(*c, a.session, "/api/projects/" + a.projects[d] + "/status");
+      const bool whole = r.status == 200 && r.body.is_object() && r.body.contains("running_here") &&
+                         r.body.contains("design") && r.body.at("design").is_object();
+      if (!whole) {
+        load.recorder.error(kStatus, r.text);
+        continue;
+      }
+      const std::string state = r.body.at("design").value("state", "");
+      if (a.running[d] && (!r.body.value("running_here", false) || state != "running"))
+        load.recorder.error(kStatus, a.name + "/" + a.projects[d] + ": a resumed design no longer runs here (" + state + ")");
+      else
+        load.recorder.ok(kStatus, r.ms);
+    }
+    load.pause(load.options.poll, random);
+  }
+}
+
+double process_cpu_seconds() {
+  rusage u{};
+  ::getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+/// CPU seconds the whole machine has been busy (every core, /proc/stat's first line: all but idle and iowait).
+double machine_busy_seconds() {
+  std::ifstream in("/proc/stat");
+  std::string cpu;
+  double user = 0, nice = 0, system = 0, idle = 0, iowait = 0, irq = 0, softirq = 0, steal = 0;
+  in >> cpu >> user >> nice >> system >> idle >> iowait >> irq >> softirq >> steal;
+  return (user + nice + system + irq + softirq + steal) / static_cast<double>(::sysconf(_SC_CLK_TCK));
+}
+
+/// /proc/loadavg's 1, 5 and 15 minute figures: how busy the machine was besides the bench.
+std::string load_average() {
+  std::ifstream in("/proc/loadavg");
+  std::string a, b, c;
+  in >> a >> b >> c;
+  return a + " " + b + " " + c;
+}
+
+int run_lab(const Options& o) {
+  if (o.lab_signin_pause.size() != 2 || o.lab_signin_pause[0] < 0 || o.lab_signin_pause[1] < o.lab_signin_pause[0])
+    throw std::runtime_error("--lab-signin-pause takes two numbers of seconds: least,most");
+  const int n = o.accounts, per = o.designs_per_account;
+  const long long budget = o.budget, quota = per * o.budget;
+  auto progress = [&](const std::string& what) { std::cerr << "load_bench: " << what << std::endl; };
+
+  Server server(o.binary);
+  std::vector<LabAccount> accounts(static_cast<std::size_t>(n));
+  progress("signing up " + std::to_string(n) + " accounts (lab0, the first, is the administrator)");
+  for (int i = 0; i < n; ++i) {
+    LabAccount& a = accounts[static_cast<std::size_t>(i)];
+    a.name = "lab" + std::to_string(i);
+    server.sign_up(a.name);
+    for (int d = 0; d < per; ++d) a.projects.push_back("design" + std::to_string(d + 1));
+    a.design_ids.assign(static_cast<std::size_t>(per), 0);
+    a.running.assign(static_cast<std::size_t>(per), 0);
+  }
+  // The administrator at the terminal: the server's default quota, which every account follows.
+  const json set = json::parse(server.cli("lab0", "admin quota --default --runs-per-day " + std::to_string(quota) + " --json"),
+                               nullptr, false);
+  if (!set.is_object() || set.value("runs_per_day", json()) != json(quota))
+    throw std::runtime_error("admin quota --default did not set runs_per_day " + std::to_string(quota) + ": " + set.dump());
+  progress("server default quota: " + std::to_string(quota) + " runs per day (" + std::to_string(per) + " designs of " +
+           std::to_string(budget) + ")");
+  server.start();
+  progress("server on port " + std::to_string(server.port()));
+
+  Load load{o, server.port(), {}, {}, {}, {}, {}};
+  Recorder& recorder = load.recorder;
+  auto setup = connect(server.port(), true);
+  for (LabAccount& a : accounts) a.session = sign_in(*setup, a.name);
+  {
+    const Answer r = ask(*setup, accounts[0].session, "/api/admin/quota");
+    if (r.status != 200 || !r.body.is_object() || r.body.value("runs_per_day", json()) != json(quota))
+      throw std::runtime_error("GET /api/admin/quota as lab0: " + r.text);
+  }
+
+  const std::string over = "over-quota";  // the project of each account's design too many
+  const auto design_body = [](int seed) { return json{{"architectures", "fsm"}, {"flavours", "chocolate"}, {"seed", seed}}; };
+  long over_quota_refusals = 0, quota_reads_right = 0;
+  std::string quota_message, server_full_message;
+  // The design too many: refused by the runs quota, before anything else (even with the
+  // account's designs, or the server's, all running).
+  const auto third_design = [&](const LabAccount& a) {
+    const Answer r = post(*setup, a.session, "/api/projects/" + over + "/designs", design_body(1000));
+    if (r.status == 409 && r.error().rfind("runs quota:", 0) == 0) {
+      recorder.refused(kOverQuota, r.ms);
+      ++over_quota_refusals;
+      if (quota_message.empty()) quota_message = r.error();
+    } else {
+      recorder.error(kOverQuota, a.name + ": " + r.text);
+    }
+  };
+  const auto read_quota = [&](const LabAccount& a) {
+    const Answer r = ask(*setup, a.session, "/api/quota");
+    if (r.status == 200 && r.body.is_object() && r.body.value("runs_today", json()) == json(quota) &&
+        r.body.value("runs_per_day", json()) == json(quota) && r.body.value("runs_from_default", false)) {
+      recorder.ok(kQuota, r.ms);
+      ++quota_reads_right;
+    } else {
+      recorder.error(kQuota, a.name + ": not runs_today " + std::to_string(quota) + " of the default " +
+                                 std::to_string(quota) + ": " + r.text);
+    }
+  };
+  // Until the project's design is interrupted (the stop lands within its race step's run).
+  const auto wait_stopped = [&](const LabAccount& a, const std::string& project) {
+    const auto until = Clock::now() + std::chrono::seconds(60);
+    for (std::string state;;) {
+      const Answer r = ask(*setup, a.session, "/api/projects/" + project + "/status");
+      if (r.status == 200 && r.body.is_object() && r.body.contains("design") && r.body.at("design").is_object()) {
+        state = r.body.at("design").value("state", "");
+        if (state == "interrupted" && !r.body.value("running_here", true)) return;
+      }
+      if (Clock::now() > until) {
+        recorder.error(kDesignStop, a.name + "/" + project + " still not interrupted after 60 s: " + r.text);
+        return;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+  };
+
+  // Set-up, one account after another (so the server's limit of designs never refuses a start):
+  // the projects, a design started in each, the design too many refused, the use read, then
+  // the designs stopped (interrupted) for the next account.
+  for (int i = 0; i < n; ++i) {
+    LabAccount& a = accounts[static_cast<std::size_t>(i)];
+    std::vector<std::string> projects = a.projects;
+    projects.push_back(over);
+    for (const std::string& p : projects) {
+      const Answer r = post(*setup, a.session, "/api/projects", {{"name", p}, {"mission", "aac"}, {"budget", budget}});
+      if (r.status != 200) throw std::runtime_error(a.name + ": new project " + p + ": " + r.text);
+      recorder.ok(kProject, r.ms);
+    }
+    for (int d = 0; d < per; ++d) {
+      const auto k = static_cast<std::size_t>(d);
+      const Answer r = post(*setup, a.session, "/api/projects/" + a.projects[k] + "/designs", design_body(i * per + d + 1));
+      if (r.status != 200 || !r.body.is_object() || !r.body.contains("id"))
+        throw std::runtime_error(a.name + ": start a design in " + a.projects[k] + ": " + r.text);
+      recorder.ok(kDesignStart, r.ms);
+      a.design_ids[k] = r.body.at("id").get<std::int64_t>();
+    }
+    third_design(a);
+    read_quota(a);
+    for (const std::string& p : a.projects) {
+      const Answer r = post(*setup, a.session, "/api/projects/" + p + "/designs/stop", json::object());
+      if (r.status == 200 && r.body.is_object() && r.body.value("stopping", false)) recorder.ok(kDesignStop, r.ms);
+      else recorder.error(kDesignStop, a.name + "/" + p + ": " + r.text);
+    }
+    for (const std::string& p : a.projects) wait_stopped(a, p);
+    if ((i + 1) % 5 == 0 || i + 1 == n) progress("set up " + std::to_string(i + 1) + " of " + std::to_string(n) + " accounts");
+  }
+
+  // Every design resumed, account after account, as far as the server takes them: its own
+  // limit refuses the rest (409), which is not a quota's doing. A resume counts no runs.
+  // --running-designs N stops at N (0: no design runs while the tabs are measured).
+  int running = 0, refused_by_server = 0;
+  for (LabAccount& a : accounts) {
+    for (int d = 0; d < per; ++d) {
+      const auto k = static_cast<std::size_t>(d);
+      if (o.running_designs >= 0 && running >= o.running_designs) break;
+      const int seed = static_cast<int>(&a - accounts.data()) * per + d + 1;
+      const Answer r = post(*setup, a.session, "/api/projects/" + a.projects[k] + "/designs", design_body(seed));
+      if (r.status == 200 && r.body.is_object() && r.body.value("id", json()) == json(a.design_ids[k]) &&
+          r.body.value("state", "") == "running") {
+        recorder.ok(kDesignResume, r.ms);
+        a.running[k] = 1;
+        ++running;
+      } else if (r.status == 409 && r.error().rfind("this server runs", 0) == 0) {
+        recorder.refused(kDesignResume, r.ms);
+        ++refused_by_server;
+        if (server_full_message.empty()) server_full_message = r.error();
+      } else {
+        recorder.error(kDesignResume, a.name + "/" + a.projects[k] + ": " + r.text);
+      }
+    }
+  }
+  for (const LabAccount& a : accounts) read_quota(a);
+  progress(std::to_string(running) + " designs running, " + std::to_string(refused_by_server) +
+           " resumes refused by the server's limit" + (server_full_message.empty() ? "" : " (\"" + server_full_message + "\")"));
+
+  const auto start = Clock::now();
+  load.end = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.seconds));
+  const double server_cpu_start = server.cpu_seconds(), bench_cpu_start = process_cpu_seconds();
+  const std::string load_before = load_average();
+  const double machine_start = machine_busy_seconds();
+  progress(std::to_string(n) + " accounts x (1 monitor tab + 1 sign-in tab) for " + std::to_string(static_cast<int>(o.seconds)) + " s");
+  std::vector<std::thread> tabs;
+  for (int i = 0; i < 2 * n; ++i) {
+    tabs.emplace_back([&, i] {
+      std::mt19937 random(static_cast<unsigned>(i) * 7919u + 1u);
+      const LabAccount& a = accounts[static_cast<std::size_t>(i / 2)];
+      const Kind kind = i % 2 == 0 ? kStatus : kSignIn;
+      // The monitors open over the first second; the sign-in tabs' first rounds spread over
+      // their longest pause, as users who do not all arrive at once (no burst of checks at 0 s).
+      if (kind == kStatus) std::this_thread::sleep_for(std::chrono::milliseconds(random() % 1000));
+      else load.pause_between(0, o.lab_signin_pause[1], random);
+      try {
+        if (kind == kStatus) lab_monitor_tab(load, a, random);
+        else sign_in_tab(load, a.name, o.lab_signin_pause[0], o.lab_signin_pause[1], random);
+      } catch (const std::exception& e) {
+        load.recorder.error(kind, std::string("a tab stopped: ") + e.what());
+      }
+    });
+  }
+  std::vector<double> rss_mib;
+  std::vector<long> threads;
+  for (int s = 0; Clock::now() < load.end; ++s) {
+    const auto [rss, count] = server.rss_kib_and_threads();
+    rss_mib.push_back(static_cast<double>(rss) / 1024.0);
+    threads.push_back(count);
+    if (s % 10 == 0)
+      progress("t=" + std::to_string(s) + " s: RSS " + std::to_string(static_cast<int>(rss_mib.back())) + " MiB, " +
+               std::to_string(count) + " threads, " + std::to_string(recorder.total_errors()) + " errors");
+    std::this_thread::sleep_until(start + std::chrono::seconds(s + 1));
+  }
+  for (auto& t : tabs) t.join();
+  const double held = std::chrono::duration<double>(Clock::now() - start).count();
+  const double server_cpu = server.cpu_seconds() - server_cpu_start, bench_cpu = process_cpu_seconds() - bench_cpu_start;
+  const std::string load_after = load_average();
+  const double machine_busy = machine_busy_seconds() - machine_start;
+
+  // After the load: the quota still refuses the design too many, the use is still the two designs'.
+  for (const LabAccount& a : accounts) {
+    third_design(a);
+    read_quota(a);
+  }
+  for (const LabAccount& a : accounts)  // designs are interrupted on SIGTERM anyway; ask first, as a user
+    for (std::size_t k = 0; k < a.projects.size(); ++k)
+      if (a.running[k]) {
+        const Answer r = post(*setup, a.session, "/api/projects/" + a.projects[k] + "/designs/stop", json::object());
+        if (r.status == 200) recorder.ok(kDesignStop, r.ms);
+        else recorder.error(kDesignStop, a.name + "/" + a.projects[k] + ": " + r.text);
+      }
+  setup.reset();
+  const std::string exit = server.stop();
+
+  const std::vector<Kind> kinds{kSignIn, kSession,   kSignOut,   kStatus,     kProject,
+                                kDesignStart, kOverQuota, kQuota, kDesignStop, kDesignResume};
+  json doc = recorder.document(kinds);
+  doc["scenario"] = "lab";
+  doc["accounts"] = n;
+  doc["designs_per_account"] = per;
+  doc["budget"] = budget;
+  doc["runs_per_day"] = quota;
+  doc["seconds"] = o.seconds;
+  doc["held_seconds"] = held;
+  doc["keep_alive"] = o.keep_alive;
+  doc["signin_pause_s"] = o.lab_signin_pause;
+  doc["poll_s"] = o.poll;
+  doc["designs"] = {{"started", n * per},
+                    {"running", running},
+                    {"refused_by_server", refused_by_server},
+                    {"server_limit_message", server_full_message}};
+  const long quota_refusals_expected = 2L * n, quota_reads_expected = 3L * n;
+  const bool quotas_hold = over_quota_refusals == quota_refusals_expected && quota_reads_right == quota_reads_expected;
+  doc["quotas"] = {{"over_quota_refused", over_quota_refusals},
+                   {"over_quota_expected", quota_refusals_expected},
+                   {"reads_right", quota_reads_right},
+                   {"reads_expected", quota_reads_expected},
+                   {"message", quota_message},
+                   {"hold", quotas_hold}};
+  json verdict = json::object();
+  bool fast = true;
+  for (const Kind k : {kSignIn, kStatus}) {
+    const json& r = doc["kinds"][kKindNames[k]];
+    const bool holds = r["answers"].get<long>() > 0 && r["p95_ms"].get<double>() <= o.p95_target_ms;
+    fast = fast && holds;
+    verdict[kKindNames[k]] = {{"p95_ms", r["p95_ms"]}, {"target_ms", o.p95_target_ms}, {"holds", holds}};
+  }
+  doc["verdict"] = verdict;
+  doc["server_cpu_percent"] = 100.0 * server_cpu / held;
+  doc["bench_cpu_percent"] = 100.0 * bench_cpu / held;
+  doc["load_average"] = {{"start", load_before}, {"end", load_after}};
+  // What the rest of the machine took meanwhile (other processes: a build, tests): the figures
+  // are this scenario's only when it is near 0.
+  doc["others_cpu_percent"] = 100.0 * std::max(0.0, machine_busy - server_cpu - bench_cpu) / held;
+  doc["rss_mib"] = rss_mib;
+  doc["threads"] = threads;
+  if (!rss_mib.empty()) {
+    std::vector<double> sorted = rss_mib;
+    std::sort(sorted.begin(), sorted.end());
+    doc["rss"] = {{"min_mib", sorted.front()}, {"median_mib", sorted[sorted.size() / 2]}, {"max_mib", sorted.back()},
+                  {"first_mib", rss_mib.front()}, {"last_mib", rss_mib.back()}};
+  }
+  doc["server_exit"] = exit;
+  long errors = 0;
+  for (const auto& [name, k] : doc["kinds"].items()) errors += k["errors"].get<long>();
+  doc["errors"] = errors;
+
+  if (o.json) {
+    std::cout << doc.dump(1) << "\n";
+  } else {
+    std::printf("lab: %d accounts x %d designs (AAC, FSM, Chocolate, budget %lld each; server default quota %lld runs "
+                "per day) for %.0f s, keep-alive %s\n",
+                n, per, budget, quota, held, o.keep_alive ? "on" : "off");
+    std::printf("designs: %d started (then stopped) at set-up; %d resumed and running during the measured time%s, %d "
+                "resumes refused by the server%s%s%s\n",
+                n * per, running, o.running_designs >= 0 ? " (--running-designs)" : "", refused_by_server, server_full_message.empty() ? "" : " (\"",
+                server_full_message.c_str(), server_full_message.empty() ? "" : "\")");
+    std::printf("tabs: %d design monitors (each design's status every %.1f s) and %d sign-in tabs (sign in, session, "
+                "sign out, every %.1f-%.1f s)\n",
+                n, o.poll, n, o.lab_signin_pause[0], o.lab_signin_pause[1]);
+    print_kinds(doc, kinds);
+    std::printf("quotas: %ld of %ld designs too many refused with \"runs quota: ...\" (at set-up and after the load), "
+                "%ld of %ld reads of /api/quota at runs_today %lld of the default %lld: %s\n",
+                over_quota_refusals, quota_refusals_expected, quota_reads_right, quota_reads_expected, quota, quota,
+                quotas_hold ? "holding" : "NOT HOLDING");
+    if (!quota_message.empty()) std::printf("  e.g. %s\n", quota_message.c_str());
+    for (const Kind k : {kSignIn, kStatus})
+      std::printf("p95 %s: %.1f ms <= %.0f ms: %s\n", kKindNames[k], verdict[kKindNames[k]]["p95_ms"].get<double>(),
+                  o.p95_target_ms, verdict[kKindNames[k]]["holds"].get<bool>() ? "yes" : "NO");
+    std::printf("CPU over the measured time, %% of one core: server %.0f, this bench %.0f, other processes %.0f (load "
+                "average %s at the start, %s at the end); server %s; errors: %ld\n",
+                doc["server_cpu_percent"].get<double>(), doc["bench_cpu_percent"].get<double>(),
+                doc["others_cpu_percent"].get<double>(), load_before.c_str(), load_after.c_str(), exit.c_str(), errors);
+    if (doc.contains("rss"))
+      std::printf("server RSS (MiB): first %.1f, min %.1f, median %.1f, max %.1f, last %.1f; threads %ld-%ld\n",
+                  doc["rss"]["first_mib"].get<double>(), doc["rss"]["min_mib"].get<double>(),
+                  doc["rss"]["median_mib"].get<double>(), doc["rss"]["max_mib"].get<double>(),
+                  doc["rss"]["last_mib"].get<double>(), *std::min_element(threads.begin(), threads.end()),
+                  *std::max_element(threads.begin(), threads.end()));
+  }
+  return errors == 0 && quotas_hold && fast && exit == "exit 0" ? 0 : 1;
 }
 
 }  // namespace
@@ -572,8 +1012,25 @@ int main(int argc, char** argv) {
   app.add_flag("!--no-keep-alive", o.keep_alive, "a new connection per request (keep-alive is on, as in browsers)");
   app.add_flag("--json", o.json, "print the figures as JSON instead of the table");
   app.add_option("--binary", o.binary, "the swarmdesign binary")->capture_default_str();
+  app.add_flag("--lab", o.lab,
+               "the lab instead (issue #56): accounts with designs under a runs quota, each with a design monitor "
+               "and a sign-in tab; p95 of sign-in and status against --p95-target");
+  app.add_option("--accounts", o.accounts, "--lab: accounts (the first is the administrator)")
+      ->check(CLI::Range(1, 500))->capture_default_str();
+  app.add_option("--designs-per-account", o.designs_per_account,
+                 "--lab: designs each account starts (the server runs at most 2 per user)")
+      ->check(CLI::Range(1, 2))->capture_default_str();
+  app.add_option("--budget", o.budget, "--lab: each design's budget (runs); the quota is designs-per-account x budget")
+      ->check(CLI::Range(1LL, 1000000000LL))->capture_default_str();
+  app.add_option("--lab-signin-pause", o.lab_signin_pause, "--lab: seconds between a sign-in tab's rounds: least,most")
+      ->delimiter(',')->expected(2)->capture_default_str();
+  app.add_option("--running-designs", o.running_designs,
+                 "--lab: designs resumed for the measured time (-1: as many as the server takes; 0: none, a baseline)")
+      ->check(CLI::Range(-1, 100000))->capture_default_str();
+  app.add_option("--p95-target", o.p95_target_ms, "--lab: the p95 (ms) sign-in and status must keep")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   try {
+    if (o.lab) return run_lab(o);
     return run(o);
   } catch (const std::exception& e) {
     std::cerr << "load_bench: " << e.what() << "\n";
