@@ -446,7 +446,7 @@ void monitor_tab(Load& load, const Session& s, const std::string& project, std::
   auto c = connect(load.port, load.options.keep_alive);
   for (auto poll = random() % 5; load.running(); ++poll) {
     auto start = Clock::now();
-    const auto r = c->Get(("/api/projects/" + project + "/status").c_str(), s.headers());
+    const auto r = c->Get(("/api/projects/" + project + "/status?race_log=false").c_str(), s.headers());
     const json status = r && r->status == 200 ? json::parse(r->body, nullptr, false) : json();
     if (status.is_object() && status.contains("design") && status.contains("running_here"))
       load.recorder.ok(kStatus, ms_since(start));
@@ -663,13 +663,13 @@ struct LabAccount {
 };
 
 /// The design monitor of one account: every `poll` seconds each of its designs' status, as the
-/// page's monitor polls the design it shows. A design resumed for the measured time must be
+/// page's monitor polls the design it shows (without the race log). A design resumed for the measured time must be
 /// running in this server at every poll.
 void lab_monitor_tab(Load& load, const LabAccount& a, std::mt19937& random) {
   auto c = connect(load.port, load.options.keep_alive);
   while (load.running()) {
     for (std::size_t d = 0; d < a.projects.size() && load.running(); ++d) {
-      const Answer r = ask(*c, a.session, "/api/projects/" + a.projects[d] + "/status");
+      const Answer r = ask(*c, a.session, "/api/projects/" + a.projects[d] + "/status?race_log=false");
       const bool whole = r.status == 200 && r.body.is_object() && r.body.contains("running_here") &&
                          r.body.contains("design") && r.body.at("design").is_object();
       if (!whole) {
@@ -778,7 +778,7 @@ int run_lab(const Options& o) {
   const auto wait_stopped = [&](const LabAccount& a, const std::string& project) {
     const auto until = Clock::now() + std::chrono::seconds(60);
     for (std::string state;;) {
-      const Answer r = ask(*setup, a.session, "/api/projects/" + project + "/status");
+      const Answer r = ask(*setup, a.session, "/api/projects/" + project + "/status?race_log=false");
       if (r.status == 200 && r.body.is_object() && r.body.contains("design") && r.body.at("design").is_object()) {
         state = r.body.at("design").value("state", "");
         if (state == "interrupted" && !r.body.value("running_here", true)) return;

@@ -198,8 +198,6 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
     onFollow: (name) => openDesign({ experiment: name }) });
   const renderExperiments = (s) => experiments.render(s.experiments || []);
 
-  function lastRace(s) { return s.race_log && s.race_log.length ? s.race_log[s.race_log.length - 1] : null; }
-
   function renderStatus(s) {
     renderExperiments(s);
     const design = s.design;
@@ -225,11 +223,10 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
     }
     $('runs-used').textContent = `${progress.experiments_used ?? 0} / ${design.budget}`;
     $('iteration').textContent = progress.total_iterations ? `${progress.iteration} / ${progress.total_iterations}` : String(progress.iteration ?? '–');
-    const race = lastRace(s);
-    const alive = race ? race.configurations.filter((c) => c.eliminated_after === null || c.eliminated_after === undefined).length : progress.race_configurations;
     // As `swarmdesign status` counts them: the configurations of the current race, and how
     // many of those are still racing.
-    const inRace = race ? race.configurations.length : progress.race_configurations;
+    const alive = progress.race_alive;
+    const inRace = progress.race_configurations;
     $('alive').textContent = alive === undefined ? '–' : (inRace !== undefined && inRace !== alive ? `${alive} racing of ${inRace}` : String(alive));
     // A cluster project's design runs as a Slurm job: its state, and the last problem in one line.
     const job = s.cluster_job;
@@ -325,8 +322,10 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
     try {
       const wanted = opened;
       const base = `/api/projects/${encodeURIComponent(name)}`;
-      const url = wanted === null ? `${base}/status`
-        : wanted.experiment ? `${base}/experiments/${encodeURIComponent(wanted.experiment)}/current` : `${base}/status?design=${wanted}`;
+      // Without the race log (every configuration of every race): its counts are in progress.
+      const url = wanted === null ? `${base}/status?race_log=false`
+        : wanted.experiment ? `${base}/experiments/${encodeURIComponent(wanted.experiment)}/current?race_log=false`
+          : `${base}/status?design=${wanted}&race_log=false`;
       let s;
       try {
         s = await api(url, { quiet: true });

@@ -25,15 +25,13 @@ DesignBackend& stopper_of(const storage::Design& design, DesignBackend* server) 
 }
 
 /// The race as far as it went, from the design's own folder.
-void read_race(DesignStatus& status, bool complete) {
+void read_race(DesignStatus& status, StatusDetail detail) {
   const storage::Design& d = *status.design;
   try {
     if (std::filesystem::exists(storage::DesignStore::file_in(d.folder))) {
       status.progress = storage::read_design_progress(d.folder);
-      if (complete) {
-        status.race_log = storage::read_race_log(d.folder);
-        status.convergence = storage::read_convergence(d.folder);
-      }
+      if (detail != StatusDetail::progress) status.convergence = storage::read_convergence(d.folder);
+      if (detail == StatusDetail::complete) status.race_log = storage::read_race_log(d.folder);
     }
   } catch (const storage::DesignFolderError&) {
     // A design that has just started may not have committed its tables yet.
@@ -74,7 +72,7 @@ StoppedDesign stop_design(Home& home, const storage::User& user, const std::opti
   return out;
 }
 
-DesignStatus design_status(Home& home, const storage::User& user, bool complete,
+DesignStatus design_status(Home& home, const storage::User& user, StatusDetail detail,
                            const std::optional<std::string>& project, std::optional<std::int64_t> design_id) {
   DesignStatus status;
   storage::Projects projects(home.workspace(), user);
@@ -97,12 +95,12 @@ DesignStatus design_status(Home& home, const storage::User& user, bool complete,
     status.progress = *on_cluster;
     return status;
   }
-  read_race(status, complete);
+  read_race(status, detail);
   return status;
 }
 
 DesignStatus experiment_design_status(Home& home, const storage::User& user, const std::string& project,
-                                      const std::string& experiment) {
+                                      const std::string& experiment, StatusDetail detail) {
   DesignStatus status;
   status.project = storage::Projects(home.workspace(), user).get(project);
   for (const ExperimentProgress& e : experiments_progress(home, user, project)) {
@@ -122,7 +120,7 @@ DesignStatus experiment_design_status(Home& home, const storage::User& user, con
                   ? storage::DesignState::running
                   : storage::DesignState::interrupted;
     status.design = d;
-    read_race(status, true);
+    read_race(status, detail);
     return status;
   }
   storage::Experiments(home.workspace(), status.project).get(experiment);  // NotFound naming the ones it has

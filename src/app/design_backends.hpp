@@ -30,23 +30,31 @@ StoppedDesign stop_design(Home& home, const storage::User& user, const std::opti
 /// A project's current or last design with what its design.db says: the named project, or the
 /// active one (`status`). A running design is first brought up to date by its backend (a
 /// cluster project's with Slurm, its progress read on the cluster).
+/// How much of a design `status` reads beyond its progress. The race log is the costly part
+/// (every configuration of every race, with its mean): a page polling every second leaves it.
+enum class StatusDetail {
+  progress,     // `status`
+  convergence,  // and the best elite per iteration (the page's polls)
+  complete,     // and the race log (`status --complete`)
+};
+
 struct DesignStatus {
   storage::Project project;
   std::optional<storage::Design> design;
   storage::DesignProgress progress;
-  std::vector<storage::RaceRecord> race_log;  // with `complete`
-  std::vector<storage::ConvergencePoint> convergence;  // with `complete`: the best elite per iteration
+  std::vector<storage::RaceRecord> race_log;  // with StatusDetail::complete
+  std::vector<storage::ConvergencePoint> convergence;  // from StatusDetail::convergence: the best elite per iteration
   std::optional<storage::ClusterJob> cluster_job;  // a cluster project's design: its Slurm job
 };
 /// Of the project's latest design, or of design `design_id` (NotFound if the project has none
 /// so numbered).
-DesignStatus design_status(Home& home, const storage::User& user, bool complete,
+DesignStatus design_status(Home& home, const storage::User& user, StatusDetail detail,
                            const std::optional<std::string>& project = std::nullopt,
                            std::optional<std::int64_t> design_id = std::nullopt);
 
 /// The same for the design an experiment of the project is making (or stopped in): its race
 /// read from its folder; NotFound when the experiment has none under way (all done).
 DesignStatus experiment_design_status(Home& home, const storage::User& user, const std::string& project,
-                                      const std::string& experiment);
+                                      const std::string& experiment, StatusDetail detail);
 
 }  // namespace sd::app

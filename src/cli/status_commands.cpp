@@ -34,7 +34,8 @@ void print_progress(const storage::Design& d, const storage::DesignProgress& p) 
             << "  experiments used:    " << p.experiments_used << " of " << d.budget << " (remaining "
             << d.budget - p.experiments_used << ")\n"
             << "  current race budget: " << p.race_budget << "\n"
-            << "  configurations:      " << p.race_configurations << " in this race, " << p.configurations_sampled
+            << "  configurations:      " << p.race_configurations << " in this race (" << p.race_alive << " alive), "
+            << p.configurations_sampled
             << " sampled so far\n";
   if (p.best)
     std::cout << "  best so far:         configuration " << p.best->id << ", mean score "
@@ -87,10 +88,11 @@ void status(const StatusOptions& o) {
   const storage::User user = app::signed_in_user(home);
   std::optional<std::int64_t> design;
   if (o.design > 0) design = o.design;
-  const app::DesignStatus status = app::design_status(home, user, o.complete, std::nullopt, design);
+  const auto detail = o.complete ? app::StatusDetail::complete : app::StatusDetail::progress;
+  const app::DesignStatus status = app::design_status(home, user, detail, std::nullopt, design);
   const auto experiments = app::experiments_progress(home, user, status.project.name);
   if (o.json) {
-    nlohmann::json document = app::status_document(status, o.complete);
+    nlohmann::json document = app::status_document(status, detail);
     document["experiments"] = app::experiments_document(experiments);
     if (o.argos && status.design && status.progress.best)
       document["best_argos"] = app::argos_export_document(

@@ -1,6 +1,10 @@
 #include "core/executor.hpp"
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <exception>
 
 namespace sd {
@@ -53,12 +57,29 @@ Executor::Batch* Executor::pick() {
   return nullptr;
 }
 
+void Executor::set_worker_niceness(int niceness) {
+  std::lock_guard lock(mutex_);
+  niceness_ = niceness;
+}
+
+int Executor::thread_niceness() {
+  errno = 0;
+  return getpriority(PRIO_PROCESS, static_cast<id_t>(gettid()));
+}
+
 void Executor::work() {
   inside_pool = true;
+  int niceness = 0;
   std::unique_lock lock(mutex_);
   while (true) {
     work_ready_.wait(lock, [&] { return stopping_ || pick() != nullptr; });
     if (stopping_) return;
+    if (niceness != niceness_) {
+      // Linux gives each thread its own niceness (a POSIX process would share one). Lowering it
+      // back needs CAP_SYS_NICE; without, the thread keeps the lower priority, which is harmless.
+      niceness = niceness_;
+      setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), niceness);
+    }
     Batch& batch = *pick();
     const unsigned slot = batch.slots_taken++;
     // Stay with this batch until it has no index left: the slot is ours until then.

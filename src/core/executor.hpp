@@ -47,6 +47,14 @@ class Executor {
   /// Threads in the pool now (for tests and diagnostics).
   std::size_t size() const;
 
+  /// The pool's threads run at this niceness (Linux, per thread; 0 by default), each taking it
+  /// before its next batch. A server raises it so that the cores go to its requests first (a
+  /// sign-in's Argon2id check, a status read) and the designs take what is left: they only
+  /// wait, they compute the same.
+  void set_worker_niceness(int niceness);
+  /// The niceness of the calling thread (for tests).
+  static int thread_niceness();
+
  private:
   struct Batch;
   void grow_to(std::size_t threads);  // with mutex_ held
@@ -58,6 +66,7 @@ class Executor {
   std::list<Batch*> queue_;           // oldest first: batches are served in arrival order
   std::vector<std::thread> threads_;
   bool stopping_ = false;
+  int niceness_ = 0;
 };
 
 }  // namespace sd

@@ -87,6 +87,15 @@ DesignProgress read_design_progress(const std::filesystem::path& folder) {
     }
   }
   p.configurations_sampled = count(s.db(), "SELECT count(*) FROM configurations");
+  if (const json& race = state.at("race"); !race.is_null()) {
+    for (const json& alive : race.at("alive")) p.race_alive += alive.get<int>() != 0 ? 1 : 0;
+  } else if (p.phase == "finished") {  // the last race as it ended
+    p.race_alive = static_cast<int>(count(s.db(),
+        "SELECT count(*) FROM race_configurations WHERE eliminated_after IS NULL "
+        "AND iteration = (SELECT max(iteration) FROM races)"));
+  } else {  // a race about to start: none eliminated yet
+    p.race_alive = p.race_configurations;
+  }
   p.finish_reason = state.at("finish_reason").get<std::string>();
   const json& elites = state.at("elites");
   const json& race = state.at("race");

@@ -25,6 +25,7 @@ struct DesignProgress {
   std::int64_t experiments_used = 0;  // results stored, including the current race
   std::int64_t race_budget = 0;      // budget of the current race
   int race_configurations = 0;       // configurations in the current race
+  int race_alive = 0;                // of them, the ones not eliminated (yet)
   std::int64_t configurations_sampled = 0;
   std::optional<ConfigurationScore> best;  // best elite, or the current race's leader before any
   std::string finish_reason;

@@ -74,8 +74,10 @@ void add_experiment_routes(Routes& routes) {
 
   // The design an experiment is making, as the monitor shows a design (`status --complete`).
   routes.get(project + "/experiments/" + kNamePattern + "/current", [](Call& call) -> json {
-    const app::DesignStatus status = app::experiment_design_status(call.home, call.user, call.match(1), call.match(2));
-    json doc = app::status_document(status, true);
+    const auto detail = status_detail(call.request);
+    const app::DesignStatus status =
+        app::experiment_design_status(call.home, call.user, call.match(1), call.match(2), detail);
+    json doc = app::status_document(status, detail);
     doc["running_here"] = false;  // the experiment's thread, not a design's: Stop is the experiment's
     doc["budget"] = status.design->budget;
     return doc;

@@ -44,6 +44,14 @@ std::string text_field(const nlohmann::json& body, const char* key) {
   throw app::InvalidRequest(std::string(key) + " must be text or a whole number");
 }
 
+bool query_flag(const httplib::Request& request, const char* key, bool fallback) {
+  if (!request.has_param(key)) return fallback;
+  const std::string value = request.get_param_value(key);
+  if (value == "true" || value == "1") return true;
+  if (value == "false" || value == "0") return false;
+  throw app::InvalidRequest(std::string(key) + " must be true or false, not '" + value.substr(0, 40) + "'");
+}
+
 void send_json(httplib::Response& response, const nlohmann::json& body, int status) {
   response.status = status;
   // Replace bad UTF-8 rather than throw: a name from a file must not take the answer down.

@@ -31,6 +31,10 @@ std::string text_field(const nlohmann::json& body, const char* key);
 /// first spelling, accepted for one release).
 const char* alias_or(const nlohmann::json& body, const char* key, const char* old_key);
 
+/// A yes/no query parameter (`?race_log=false`): "true"/"1" or "false"/"0", `fallback` when
+/// absent; InvalidRequest naming it otherwise.
+bool query_flag(const httplib::Request& request, const char* key, bool fallback);
+
 void send_json(httplib::Response& response, const nlohmann::json& body, int status = 200);
 /// `text` with every path under the server's home made relative to it (users/NAME/projects/...):
 /// a web user never sees where on the server's disk the home is (issue #56).

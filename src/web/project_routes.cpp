@@ -95,8 +95,9 @@ void add_project_routes(Routes& routes) {
   routes.get(project + "/status", [](Call& call) {
     std::optional<std::int64_t> design;
     if (call.request.has_param("design")) design = design_number(call.request.get_param_value("design"));
-    const app::DesignStatus status = app::design_status(call.home, call.user, true, call.match(1), design);
-    json doc = app::status_document(status, true);
+    const auto detail = status_detail(call.request);
+    const app::DesignStatus status = app::design_status(call.home, call.user, detail, call.match(1), design);
+    json doc = app::status_document(status, detail);
     doc["running_here"] = call.context.designs.running_here(status.project.id);
     doc["budget"] = status.project.budget ? json(*status.project.budget) : json();
     const auto problem = app::mission_problem(status.project);

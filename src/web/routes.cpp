@@ -63,4 +63,8 @@ void follow_running(Call& call, const std::string& project, const std::vector<ap
     }
 }
 
+app::StatusDetail status_detail(const httplib::Request& request) {
+  return query_flag(request, "race_log", true) ? app::StatusDetail::complete : app::StatusDetail::convergence;
+}
+
 }  // namespace sd::web

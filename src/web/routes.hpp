@@ -13,6 +13,7 @@
 #include "app/background_designs.hpp"
 #include "app/background_experiments.hpp"
 #include "app/cluster_collector.hpp"
+#include "app/design_backends.hpp"
 #include "app/home.hpp"
 #include "app/sign_up.hpp"
 #include "app/accounts.hpp"
@@ -93,6 +94,10 @@ inline constexpr const char* kNamePattern = "([A-Za-z][A-Za-z0-9._-]{0,63})";
 /// A read that shows a running experiment asks the server's collector to follow its project: a
 /// cluster project's designs come home on the collector's ticker, never inside a request.
 void follow_running(Call& call, const std::string& project, const std::vector<app::ExperimentProgress>& experiments);
+
+/// How much of a design a status read gives: everything (`status --complete`) unless the page
+/// asks `?race_log=false`, its polls' way to leave the costly race log out.
+app::StatusDetail status_detail(const httplib::Request& request);
 
 void add_account_routes(Routes& routes);
 void add_software_routes(Routes& routes);

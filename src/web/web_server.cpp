@@ -6,6 +6,7 @@
 
 #include <stdexcept>
 
+#include "core/executor.hpp"
 #include "web/http_io.hpp"
 #include "web/routes.hpp"
 
@@ -18,6 +19,9 @@ WebServer::WebServer(WebServerOptions options)
   // A shared server keeps every user's files to itself: what it creates (projects, designs,
   // saved software, exports) is 0600, its folders 0700, whatever umask it was started with.
   ::umask(077);
+  // The designs it runs take the cores only when no request wants them: a sign-in beside 8
+  // running designs waited 0.7 s for its 0.18 s of Argon2id at the same priority (bench/README).
+  Executor::shared().set_worker_niceness(kDesignNiceness);
   httplib::Server& s = *server_;
   s.new_task_queue = [] { return new httplib::ThreadPool(kServerThreads); };
   s.set_payload_max_length(kMaxRequestBytes);

@@ -36,6 +36,9 @@ inline constexpr std::size_t kMaxRequestBytes = 1 << 20;
 /// event stream: past this many, a new connection waits for one to close. 200 tabs, each with
 /// an Exec stream, hold 400 (bench/load_bench); an idle thread costs only its stack's touched pages.
 inline constexpr int kServerThreads = 512;
+/// The niceness of the evaluation threads of the designs, experiments and runs it serves:
+/// requests first (the scheduler gives a niceness-10 thread about a tenth of a contended core).
+inline constexpr int kDesignNiceness = 10;
 
 class WebServer {
  public:

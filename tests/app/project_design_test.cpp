@@ -4,6 +4,7 @@
 // still end bit for bit as they do alone.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <thread>
 
@@ -77,11 +78,16 @@ TEST_F(ProjectDesign, ACancelledDesignIsInterruptedAndTheNextStartResumesIt) {
   const app::DesignOutcome stopped = app::run_project_design(first, {.threads = 2, .observer = &stop, .cancel = &stop.token});
   EXPECT_TRUE(stopped.cancelled);
 
-  const app::DesignStatus interrupted = app::design_status(*home_, user_, false);
+  const app::DesignStatus interrupted = app::design_status(*home_, user_, app::StatusDetail::progress);
   ASSERT_TRUE(interrupted.design);
   EXPECT_EQ(interrupted.design->state, storage::DesignState::interrupted);
   EXPECT_TRUE(interrupted.progress.started);
-  EXPECT_EQ(app::status_document(interrupted, false)["design"]["state"], "interrupted");
+  EXPECT_GT(interrupted.progress.race_alive, 0);
+  EXPECT_LE(interrupted.progress.race_alive, interrupted.progress.race_configurations);
+  const nlohmann::json brief = app::status_document(interrupted, app::StatusDetail::progress);
+  EXPECT_EQ(brief["design"]["state"], "interrupted");
+  EXPECT_FALSE(brief.contains("race_log"));
+  EXPECT_FALSE(brief.contains("convergence"));
 
   app::ProjectDesign again = app::start_project_design(*home_, user_, request(999));  // the seed given is ignored
   EXPECT_TRUE(again.resumed);
@@ -89,11 +95,22 @@ TEST_F(ProjectDesign, ACancelledDesignIsInterruptedAndTheNextStartResumesIt) {
   const app::DesignOutcome done = app::run_project_design(again, {.threads = 1});
   ASSERT_TRUE(done.report);
 
-  const app::DesignStatus finished = app::design_status(*home_, user_, true);
+  const app::DesignStatus finished = app::design_status(*home_, user_, app::StatusDetail::complete);
   EXPECT_EQ(finished.design->state, storage::DesignState::finished);
   EXPECT_EQ(*finished.design->best_config, done.report->elites.front().configuration);
   EXPECT_EQ(finished.progress.best->command_line, done.report->elites.front().configuration);
-  EXPECT_FALSE(finished.race_log.empty());
+  ASSERT_FALSE(finished.race_log.empty());
+  // The count of the alive is the last race's, as its log ends.
+  const auto& last = finished.race_log.back().members;
+  EXPECT_EQ(finished.progress.race_alive,
+            std::count_if(last.begin(), last.end(), [](const storage::RaceMember& m) { return !m.eliminated_after; }));
+  // A page's poll: the convergence without the race log.
+  const app::DesignStatus polled = app::design_status(*home_, user_, app::StatusDetail::convergence);
+  EXPECT_TRUE(polled.race_log.empty());
+  EXPECT_EQ(polled.convergence.size(), finished.convergence.size());
+  const nlohmann::json poll = app::status_document(polled, app::StatusDetail::convergence);
+  EXPECT_FALSE(poll.contains("race_log"));
+  EXPECT_EQ(poll["progress"]["race_alive"], finished.progress.race_alive);
 
   // The same design uninterrupted, in a fresh project: the same result.
   project("again");

@@ -84,5 +84,20 @@ TEST(Executor, ZeroThreadsMeansOnePerCore) {
   EXPECT_EQ(resolve_threads(-1), resolve_threads(0));
 }
 
+TEST(Executor, WorkersTakeTheNicenessSetForThemBeforeTheirNextBatch) {
+  const int mine = Executor::thread_niceness();
+  const int lower = std::min(mine + 5, 19);
+  Executor pool;
+  const auto niceness_seen = [&] {
+    std::vector<int> seen(64, -100);
+    pool.run(seen.size(), 2, [&](std::size_t i, unsigned) { seen[i] = Executor::thread_niceness(); });
+    return std::set<int>(seen.begin(), seen.end());
+  };
+  EXPECT_EQ(niceness_seen(), std::set<int>{mine}) << "a new pool runs as its creator does";
+  pool.set_worker_niceness(lower);  // threads that exist already take it too
+  EXPECT_EQ(niceness_seen(), std::set<int>{lower});
+  EXPECT_EQ(Executor::thread_niceness(), mine) << "the caller's own thread is left alone";
+}
+
 }  // namespace
 }  // namespace sd

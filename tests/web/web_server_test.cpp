@@ -13,6 +13,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstring>
@@ -664,6 +665,18 @@ TEST_F(WebServer, ADesignStartedFromThePageIsFollowedStoppedAndResumed) {
   EXPECT_GE(done.body.at("progress").at("experiments_used").get<std::int64_t>(), used);
   EXPECT_FALSE(done.body.at("race_log").empty());
   EXPECT_EQ(alice_->get("/api/projects/d/designs").body.size(), 1u);
+  // The page's poll: the same without the race log, whose counts its progress holds.
+  const Answer polled = alice_->get("/api/projects/d/status?race_log=false");
+  ASSERT_EQ(polled.status, 200) << polled.text;
+  EXPECT_FALSE(polled.body.contains("race_log"));
+  EXPECT_EQ(polled.body.at("convergence"), done.body.at("convergence"));
+  EXPECT_EQ(polled.body.at("progress"), done.body.at("progress"));
+  const json& last_race = done.body.at("race_log").back().at("configurations");
+  EXPECT_EQ(polled.body.at("progress").at("race_alive"),
+            std::count_if(last_race.begin(), last_race.end(), [](const json& c) { return c.at("eliminated_after").is_null(); }));
+  const Answer wrong = alice_->get("/api/projects/d/status?race_log=maybe");
+  EXPECT_EQ(wrong.status, 400);
+  EXPECT_EQ(wrong.body.at("error"), "race_log must be true or false, not 'maybe'");
 
   // Its best tested on fresh seeds from the page scores what test-design scores.
   const Answer tested = alice_->post("/api/projects/d/test", {{"seeds", "11-15"}});

@@ -65,6 +65,7 @@ json stored_progress_document(const storage::DesignProgress& p) {
            {"remaining_budget", p.budget - p.experiments_used},
            {"race_budget", p.race_budget},
            {"race_configurations", p.race_configurations},
+           {"race_alive", p.race_alive},
            {"configurations_sampled", p.configurations_sampled},
            {"best", p.best ? configuration_score(*p.best) : json()}};
   json elites = json::array();  // each over all its runs, as "best" (the race log's means are per race)
@@ -145,6 +146,8 @@ storage::DesignProgress stored_progress_from_document(const json& d) {
   p.budget = p.experiments_used + integer<std::int64_t>(d, "remaining_budget");
   p.race_budget = integer<std::int64_t>(d, "race_budget");
   p.race_configurations = integer<int>(d, "race_configurations");
+  // A cluster running an older binary writes no count of the alive: all of them, as it began.
+  p.race_alive = d.contains("race_alive") ? integer<int>(d, "race_alive") : p.race_configurations;
   p.configurations_sampled = integer<std::int64_t>(d, "configurations_sampled");
   if (const auto& b = d.at("best"); !b.is_null())
     p.best = storage::ConfigurationScore{integer<int>(b, "id"), b.at("configuration").get<std::string>(),
@@ -154,16 +157,14 @@ storage::DesignProgress stored_progress_from_document(const json& d) {
 }
 
 
-nlohmann::json status_document(const DesignStatus& status, bool complete) {
+nlohmann::json status_document(const DesignStatus& status, StatusDetail detail) {
   if (!status.design) return {{"project", status.project.name}, {"design", nullptr}};
   nlohmann::json out{{"project", status.project.name},
                      {"design", design_row_document(*status.design)},
                      {"progress", stored_progress_document(status.progress)}};
   if (status.cluster_job) out["cluster_job"] = cluster_job_document(*status.cluster_job);
-  if (complete) {
-    out["race_log"] = race_log_document(status.race_log);
-    out["convergence"] = convergence_document(status.convergence);
-  }
+  if (detail != StatusDetail::progress) out["convergence"] = convergence_document(status.convergence);
+  if (detail == StatusDetail::complete) out["race_log"] = race_log_document(status.race_log);
   return out;
 }
 

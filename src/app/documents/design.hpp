@@ -28,7 +28,7 @@ nlohmann::json design_row_document(const storage::Design& design);
 nlohmann::json cluster_job_document(const storage::ClusterJob& job);
 /// `status`: the project's current or last design, its progress, its Slurm job, and with
 /// `complete` its race log and convergence.
-nlohmann::json status_document(const DesignStatus& status, bool complete);
+nlohmann::json status_document(const DesignStatus& status, StatusDetail detail);
 /// storage::DesignProgress back from stored_progress_document (a cluster's `design-status
 /// --json`, read by the cluster backend); std::runtime_error naming the field when damaged.
 storage::DesignProgress stored_progress_from_document(const nlohmann::json& document);
