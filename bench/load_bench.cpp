@@ -41,6 +41,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <mutex>
@@ -320,6 +321,30 @@ struct Load {
   }
 };
 
+/// What the bench says as it goes, on stderr: --json's stdout stays JSON.
+void progress(const std::string& what) { std::cerr << "load_bench: " << what << std::endl; }
+
+/// The server's RSS and threads once a second from `start` until the load ends, and every 10 s a
+/// progress line (with `more`: what the scenario counts besides errors).
+struct ServerSamples {
+  std::vector<double> rss_mib;
+  std::vector<long> threads;
+};
+ServerSamples sample_server(const Server& server, const Load& load, Clock::time_point start,
+                            const std::function<std::string()>& more) {
+  ServerSamples out;
+  for (int s = 0; Clock::now() < load.end; ++s) {
+    const auto [rss, count] = server.rss_kib_and_threads();
+    out.rss_mib.push_back(static_cast<double>(rss) / 1024.0);
+    out.threads.push_back(count);
+    if (s % 10 == 0)
+      progress("t=" + std::to_string(s) + " s: RSS " + std::to_string(static_cast<int>(out.rss_mib.back())) + " MiB, " +
+               std::to_string(count) + " threads, " + more() + std::to_string(load.recorder.total_errors()) + " errors");
+    std::this_thread::sleep_until(start + std::chrono::seconds(s + 1));
+  }
+  return out;
+}
+
 /// Signs `name` in, reads the session and signs out, again and again, `least` to `most` seconds apart.
 void sign_in_tab(Load& load, const std::string& name, double least, double most, std::mt19937& random) {
   auto c = connect(load.port, load.options.keep_alive);
@@ -506,9 +531,6 @@ int run(const Options& o) {
   // Accounts: one per sign-in tab (its own name); the exec tabs four to an account (the
   // per-user limit of simulating runs), the parse tabs share those; one per design.
   const int editors = std::max(1, (exec + 3) / 4);
-  auto progress = [&](const std::string& what) {
-    std::cerr << "load_bench: " << what << std::endl;  // stderr: --json's stdout stays JSON
-  };
   progress("signing up " + std::to_string(signin + editors + designs) + " accounts");
   for (int i = 0; i < signin; ++i) server.sign_up("signin" + std::to_string(i));
   for (int i = 0; i < editors; ++i) server.sign_up("editor" + std::to_string(i));
@@ -566,18 +588,8 @@ int run(const Options& o) {
     });
   }
 
-  std::vector<double> rss_mib;
-  std::vector<long> threads;
-  for (int s = 0; Clock::now() < load.end; ++s) {
-    const auto [rss, n] = server.rss_kib_and_threads();
-    rss_mib.push_back(static_cast<double>(rss) / 1024.0);
-    threads.push_back(n);
-    if (s % 10 == 0)
-      progress("t=" + std::to_string(s) + " s: RSS " + std::to_string(static_cast<int>(rss_mib.back())) + " MiB, " +
-               std::to_string(n) + " threads, " + std::to_string(load.runs_ended.load()) + " runs ended, " +
-               std::to_string(load.recorder.total_errors()) + " errors");
-    std::this_thread::sleep_until(start + std::chrono::seconds(s + 1));
-  }
+  const auto [rss_mib, threads] =
+      sample_server(server, load, start, [&] { return std::to_string(load.runs_ended.load()) + " runs ended, "; });
   for (auto& t : tabs) t.join();  // each finishes the request it had begun
   const double held = std::chrono::duration<double>(Clock::now() - start).count();
 
@@ -714,7 +726,6 @@ int run_lab(const Options& o) {
     throw std::runtime_error("--lab-signin-pause takes two numbers of seconds: least,most");
   const int n = o.accounts, per = o.designs_per_account;
   const long long budget = o.budget, quota = per * o.budget;
-  auto progress = [&](const std::string& what) { std::cerr << "load_bench: " << what << std::endl; };
 
   Server server(o.binary);
   std::vector<LabAccount> accounts(static_cast<std::size_t>(n));
@@ -874,17 +885,7 @@ int run_lab(const Options& o) {
       }
     });
   }
-  std::vector<double> rss_mib;
-  std::vector<long> threads;
-  for (int s = 0; Clock::now() < load.end; ++s) {
-    const auto [rss, count] = server.rss_kib_and_threads();
-    rss_mib.push_back(static_cast<double>(rss) / 1024.0);
-    threads.push_back(count);
-    if (s % 10 == 0)
-      progress("t=" + std::to_string(s) + " s: RSS " + std::to_string(static_cast<int>(rss_mib.back())) + " MiB, " +
-               std::to_string(count) + " threads, " + std::to_string(recorder.total_errors()) + " errors");
-    std::this_thread::sleep_until(start + std::chrono::seconds(s + 1));
-  }
+  const auto [rss_mib, threads] = sample_server(server, load, start, [] { return std::string(); });
   for (auto& t : tabs) t.join();
   const double held = std::chrono::duration<double>(Clock::now() - start).count();
   const double server_cpu = server.cpu_seconds() - server_cpu_start, bench_cpu = process_cpu_seconds() - bench_cpu_start;

@@ -1,10 +1,6 @@
 #include "app/account_admin.hpp"
 
-#include <sodium.h>
-
 #include <nlohmann/json.hpp>
-
-#include <array>
 
 #include "app/errors.hpp"
 #include "app/quotas.hpp"
@@ -42,14 +38,8 @@ storage::AccountRow other_account(Home& home, const storage::User& admin, const 
   return row;
 }
 
-/// 20 letters and digits from libsodium's generator (about 103 bits), none that look alike.
-std::string one_time_password() {
-  static constexpr char kAlphabet[] = "abcdefghijkmnpqrstuvwxyzABCDEFGHJKLMNPQRSTUVWXYZ23456789";
-  storage::ensure_sodium();
-  std::string out;
-  for (int i = 0; i < 20; ++i) out.push_back(kAlphabet[randombytes_uniform(sizeof kAlphabet - 1)]);
-  return out;
-}
+/// A one-time password: 20 symbols (about 116 bits), typed once.
+std::string one_time_password() { return storage::readable_secret(20); }
 
 }  // namespace
 

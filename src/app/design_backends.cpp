@@ -4,6 +4,7 @@
 #include "app/errors.hpp"
 #include "app/experiment_job.hpp"
 #include "app/local_processes.hpp"
+#include "app/project_design.hpp"
 #include "app/projects.hpp"
 #include "app/quotas.hpp"
 #include "storage/design_store.hpp"
@@ -51,9 +52,8 @@ StartedDesign start_design(Home& home, const storage::User& user, const DesignLa
   require_disk_room(home, user);
   // A new design counts its budget once started; an interrupted one that resumes counted its
   // runs when it began (and a start that resumes after all counts nothing below).
-  const auto latest = storage::Designs(home.workspace(), project).latest();
-  const bool resumes = latest && latest->state == storage::DesignState::interrupted && !launch.design.fresh;
-  RunReservation runs(home, user, resumes ? 0 : project.budget.value_or(0), "this design");
+  const bool resumed = resumes(storage::Designs(home.workspace(), project).latest(), launch.design.fresh);
+  RunReservation runs(home, user, resumed ? 0 : project.budget.value_or(0), "this design");
   StartedDesign started = backend_for(project, server).start(home, user, launch);
   if (!started.resumed) runs.keep();
   return started;

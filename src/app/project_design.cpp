@@ -1,6 +1,5 @@
 #include "app/project_design.hpp"
 
-
 #include <nlohmann/json.hpp>
 
 #include "app/errors.hpp"
@@ -25,10 +24,6 @@ LeaseKeeper design_lease(const ProjectDesign& d) {
     storage::Designs(home.workspace(), project).heartbeat(id, owner);
   });
 }
-
-}  // namespace
-
-namespace {
 
 /// Whether `prepared`, seeded `seed`, would run exactly as `finished` ran.
 bool repeats(const storage::Design& finished, const PreparedDesign& prepared, std::uint64_t seed, std::int64_t budget) {
@@ -83,6 +78,10 @@ AlreadyFinished::AlreadyFinished(storage::Design finished, const std::string& pr
                ": it would only repeat it (run-design --new, or fresh in the web API, designs it again)"),
       design(std::move(finished)) {}
 
+bool resumes(const std::optional<storage::Design>& latest, bool fresh) {
+  return latest && latest->state == storage::DesignState::interrupted && !fresh;
+}
+
 ProjectDesign start_project_design(Home& home, const storage::User& user, const ProjectDesignRequest& request) {
   storage::Workspace& workspace = home.workspace();
   storage::Projects projects(workspace, user);
@@ -93,7 +92,7 @@ ProjectDesign start_project_design(Home& home, const storage::User& user, const 
   storage::Designs designs(workspace, project);
   const auto latest = designs.latest();
 
-  if (latest && latest->state == storage::DesignState::interrupted && !request.fresh) {
+  if (resumes(latest, request.fresh)) {
     PreparedDesign prepared;
     try {
       prepared = std::filesystem::exists(storage::DesignStore::file_in(latest->folder))

@@ -52,6 +52,11 @@ struct AlreadyFinished : storage::Conflict {
   storage::Design design;
 };
 
+/// Whether a start, given the project's latest design, resumes it rather than making another:
+/// it was interrupted and no fresh design is asked (what start_project_design does, for the
+/// quota to know beforehand that a resume counts no runs).
+bool resumes(const std::optional<storage::Design>& latest, bool fresh);
+
 /// Resumes the project's interrupted design (unless `fresh`), or records a new one with the
 /// project's mission and budget. Everything that can be refused is checked before the designs
 /// table changes. AlreadyFinished (unless `fresh`) when the new one would repeat the last.

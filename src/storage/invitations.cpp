@@ -1,9 +1,5 @@
 #include "storage/invitations.hpp"
 
-#include <sodium.h>
-
-#include <array>
-
 #include "storage/clock.hpp"
 #include "storage/errors.hpp"
 #include "storage/sodium.hpp"
@@ -12,23 +8,8 @@ namespace sd::storage {
 
 namespace {
 
-using CodeHash = std::array<unsigned char, 32>;
-
-CodeHash hash_code(std::string_view code) {
-  ensure_sodium();
-  CodeHash hash{};
-  crypto_generichash(hash.data(), hash.size(), reinterpret_cast<const unsigned char*>(code.data()), code.size(), nullptr, 0);
-  return hash;
-}
-
-/// 24 letters and digits that do not look alike (about 137 bits): typed or pasted from a link.
-std::string random_code() {
-  static constexpr char kAlphabet[] = "abcdefghijkmnpqrstuvwxyzABCDEFGHJKLMNPQRSTUVWXYZ23456789";
-  ensure_sodium();
-  std::string out;
-  for (int i = 0; i < 24; ++i) out.push_back(kAlphabet[randombytes_uniform(sizeof kAlphabet - 1)]);
-  return out;
-}
+/// 24 symbols (about 139 bits): typed or pasted from a link.
+constexpr std::size_t kCodeLength = 24;
 
 std::optional<std::string> optional_text(Statement& q, int column) {
   if (q.is_null(column)) return std::nullopt;
@@ -38,8 +19,8 @@ std::optional<std::string> optional_text(Statement& q, int column) {
 }  // namespace
 
 NewInvitation create_invitation(Database& db, std::int64_t admin_id, std::int64_t lifetime_seconds) {
-  NewInvitation out{0, random_code(), unix_now() + lifetime_seconds};
-  const CodeHash hash = hash_code(out.code);
+  NewInvitation out{0, readable_secret(kCodeLength), unix_now() + lifetime_seconds};
+  const SecretHash hash = hash_secret(out.code);
   db.prepare("INSERT INTO invitations (code_hash, created_by, created_at, expires_at) VALUES (?, ?, ?, ?)")
       .bind_blob(1, hash.data(), hash.size())
       .bind(2, admin_id)
@@ -74,14 +55,14 @@ void revoke_invitation(Database& db, std::int64_t id) {
 }
 
 bool invitation_open(Database& db, std::string_view code, std::int64_t now) {
-  const CodeHash hash = hash_code(code);
+  const SecretHash hash = hash_secret(code);
   Statement q = db.prepare("SELECT 1 FROM invitations WHERE code_hash = ? AND used_at IS NULL AND expires_at > ?");
   q.bind_blob(1, hash.data(), hash.size()).bind(2, now);
   return q.step();
 }
 
 void use_invitation(Database& db, std::string_view code, const User& user, std::int64_t now) {
-  const CodeHash hash = hash_code(code);
+  const SecretHash hash = hash_secret(code);
   db.prepare("UPDATE invitations SET used_by = ?, used_at = ? WHERE code_hash = ? AND used_at IS NULL AND expires_at > ?")
       .bind(1, user.id)
       .bind(2, now)

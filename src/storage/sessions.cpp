@@ -10,16 +10,6 @@
 namespace sd::storage {
 
 namespace {
-using TokenHash = std::array<unsigned char, 32>;
-
-TokenHash hash_token(std::string_view token) {
-  ensure_sodium();
-  TokenHash hash{};
-  crypto_generichash(hash.data(), hash.size(), reinterpret_cast<const unsigned char*>(token.data()), token.size(),
-                     nullptr, 0);
-  return hash;
-}
-
 std::string random_token() {
   ensure_sodium();
   std::array<unsigned char, 32> bytes{};
@@ -34,7 +24,7 @@ std::string random_token() {
 
 NewSession start_session(Database& db, const User& user) {
   NewSession session{random_token(), 0};
-  const TokenHash hash = hash_token(session.token);
+  const SecretHash hash = hash_secret(session.token);
   const std::int64_t now = unix_now();
   session.expires_at = now + kSessionLifetime.count();
   Transaction transaction(db);
@@ -50,7 +40,7 @@ NewSession start_session(Database& db, const User& user) {
 }
 
 std::optional<SessionRecord> find_session(Database& db, std::string_view token) {
-  const TokenHash hash = hash_token(token);
+  const SecretHash hash = hash_secret(token);
   auto query = db.prepare(
       "SELECT u.id, u.name, u.created_at, s.expires_at FROM sessions s JOIN users u ON u.id = s.user_id "
       "WHERE s.token_hash = ?");
@@ -60,7 +50,7 @@ std::optional<SessionRecord> find_session(Database& db, std::string_view token) 
 }
 
 void end_session(Database& db, std::string_view token) {
-  const TokenHash hash = hash_token(token);
+  const SecretHash hash = hash_secret(token);
   Transaction transaction(db);
   db.prepare("DELETE FROM sessions WHERE token_hash = ?").bind_blob(1, hash.data(), hash.size()).run();
   transaction.commit();
@@ -71,7 +61,7 @@ void end_sessions_of(Database& db, std::int64_t user_id, std::optional<std::stri
     db.prepare("DELETE FROM sessions WHERE user_id = ?").bind(1, user_id).run();
     return;
   }
-  const TokenHash keep = hash_token(*except_token);
+  const SecretHash keep = hash_secret(*except_token);
   db.prepare("DELETE FROM sessions WHERE user_id = ? AND token_hash <> ?").bind(1, user_id).bind_blob(2, keep.data(), keep.size()).run();
 }
 

@@ -10,7 +10,7 @@
 
 #include "web/web_client.hpp"
 #include "workflow/design_helpers.hpp"
-#include "workflow/workflow_fixture.hpp"
+#include "workflow/served_workflow.hpp"
 
 namespace sd::test {
 namespace {
@@ -18,10 +18,10 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-class accounts_admin : public WorkflowTest {
+class accounts_admin : public ServedWorkflowTest {
  protected:
   void SetUp() override {
-    WorkflowTest::SetUp();
+    ServedWorkflowTest::SetUp();
     user_with_active_project("boss", "lab");  // the home's first account: its administrator
     sign_up("ann", "ann-secret-pw");
     sign_up("bob", "bob-secret-pw");
@@ -29,18 +29,8 @@ class accounts_admin : public WorkflowTest {
     run_ok({"new-project", "ann-work"});
     write_short_mission(home() / "users" / "ann" / "projects" / "ann-work", 2);
     sign_in("boss", "boss-secret-pw");
-    server_.emplace(home());
+    serve();
   }
-  void TearDown() override {
-    server_.reset();
-    WorkflowTest::TearDown();
-  }
-  WebClient signed_in(const std::string& name, const std::string& password) {
-    WebClient client(server_->port());
-    EXPECT_TRUE(client.sign_in(name, password)) << name << ": " << client.last_refusal();
-    return client;
-  }
-  std::optional<RunningServer> server_;
 };
 
 TEST_F(accounts_admin, TheFirstAccountAdministersAndSeesEveryAccountsUse) {
@@ -86,16 +76,16 @@ TEST_F(accounts_admin, ADisabledAccountOpensNoSessionAndItsOpenOnesEnd) {
   WebClient boss = signed_in("boss", "boss-secret-pw");
   ASSERT_EQ(boss.post("/api/admin/users/bob/disable", json::object()).status, 200);
   EXPECT_EQ(bob.get("/api/projects").status, 401) << "the open session ended";
-  WebClient again(server_->port());
+  WebClient again(port());
   EXPECT_FALSE(again.sign_in("bob", "bob-secret-pw"));
   EXPECT_NE(again.last_refusal().find("disabled"), std::string::npos) << again.last_refusal();
-  WebClient guess(server_->port());
+  WebClient guess(port());
   EXPECT_FALSE(guess.sign_in("bob", "not-his-password"));
   EXPECT_EQ(guess.last_refusal().find("disabled"), std::string::npos) << "a wrong password learns nothing";
   expect_error(run({"sign-in", "bob", "--password-stdin"}, "bob-secret-pw\n"), 1, "disabled");
   expect_error(run({"admin", "disable", "boss"}), 2, "your own account");
   run_ok({"admin", "enable", "bob"});
-  EXPECT_TRUE(WebClient(server_->port()).sign_in("bob", "bob-secret-pw"));
+  EXPECT_TRUE(WebClient(port()).sign_in("bob", "bob-secret-pw"));
 }
 
 TEST_F(accounts_admin, ANewPasswordIsShownOnceAndEndsTheAccountsSessions) {
@@ -106,7 +96,7 @@ TEST_F(accounts_admin, ANewPasswordIsShownOnceAndEndsTheAccountsSessions) {
   const std::string password = reset.body["password"];
   EXPECT_EQ(password.size(), 20u);
   EXPECT_EQ(ann.get("/api/projects").status, 401);
-  EXPECT_FALSE(WebClient(server_->port()).sign_in("ann", "ann-secret-pw"));
+  EXPECT_FALSE(WebClient(port()).sign_in("ann", "ann-secret-pw"));
   WebClient fresh = signed_in("ann", password);
   // Ann changes it on the page: her other sessions end, this one stays.
   WebClient other = signed_in("ann", password);

@@ -10,17 +10,17 @@
 
 #include "web/web_client.hpp"
 #include "workflow/design_helpers.hpp"
-#include "workflow/workflow_fixture.hpp"
+#include "workflow/served_workflow.hpp"
 
 namespace sd::test {
 namespace {
 
 using nlohmann::json;
 
-class front_ends : public WorkflowTest {
+class front_ends : public ServedWorkflowTest {
  protected:
   void SetUp() override {
-    WorkflowTest::SetUp();
+    ServedWorkflowTest::SetUp();
     user_with_active_project("ada", "p");
     // In the project's own folder: the web reads a user's mission files only there.
     const auto mission = write_short_mission(home() / "users" / "ada" / "projects" / "p", 2);
@@ -28,14 +28,13 @@ class front_ends : public WorkflowTest {
     run_ok({"set-budget", "1100"});
     run_ok({"run-design", "--fsm", "--chocolate", "--seed", "1", "--threads", "2"});
     run_ok({"run-design", "--fsm", "--chocolate", "--seed", "2", "--threads", "2"});
-    server_.emplace(home());
-    browser_.emplace(server_->port());
+    serve();
+    browser_.emplace(port());
     ASSERT_TRUE(browser_->sign_in("ada", "ada-secret-pw")) << browser_->last_refusal();
   }
   void TearDown() override {
     browser_.reset();
-    server_.reset();
-    WorkflowTest::TearDown();
+    ServedWorkflowTest::TearDown();
   }
   json web(const std::string& route, const json& body) {
     const Answer answer = browser_->post("/api/projects/p/" + route, body);
@@ -43,7 +42,6 @@ class front_ends : public WorkflowTest {
     return answer.body;
   }
 
-  std::optional<RunningServer> server_;
   std::optional<WebClient> browser_;
 };
 
@@ -175,7 +173,7 @@ TEST_F(front_ends, BadRequestsAreOneLineRefusalsAndThePageReadsOnlyTheUsersFiles
   refused("experiments", {{"protocol", "validation"}, {"text", "{}"}, {"dry_run", true}}, 400);
   // Another account's projects are not there at all.
   run_ok({"sign-up", "eve", "--password-stdin"}, "eve-secret-pw\n");
-  WebClient eve(server_->port());
+  WebClient eve(port());
   ASSERT_TRUE(eve.sign_in("eve", "eve-secret-pw"));
   EXPECT_EQ(eve.post("/api/projects/p/argos", {{"design", 2}}).status, 404);
   EXPECT_EQ(eve.post("/api/projects/p/compare", {{"designs", {1, 2}}}).status, 404);

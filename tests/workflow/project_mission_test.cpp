@@ -16,7 +16,7 @@
 
 #include "web/web_client.hpp"
 #include "workflow/design_helpers.hpp"
-#include "workflow/workflow_fixture.hpp"
+#include "workflow/served_workflow.hpp"
 
 namespace sd::test {
 namespace {
@@ -25,10 +25,10 @@ using nlohmann::json;
 namespace fs = std::filesystem;
 using namespace std::chrono_literals;
 
-class project_mission : public WorkflowTest {
+class project_mission : public ServedWorkflowTest {
  protected:
   void SetUp() override {
-    WorkflowTest::SetUp();
+    ServedWorkflowTest::SetUp();
     user_with_active_project("ann", "holder");
     run_ok({"set-mission", "aac"});
     run_ok({"set-budget", "1400"});
@@ -42,7 +42,7 @@ class project_mission : public WorkflowTest {
     run_ok({"select-project", "bobs"});
     run_ok({"set-mission", "aac"});
     sign_in("ann", "ann-secret-pw");
-    server_.emplace(home());
+    serve();
     ann_.emplace(signed_in("ann", "ann-secret-pw"));
     // Ann's own mission, uploaded into "holder" as the page does.
     const fs::path draft = write_short_mission(scratch());
@@ -54,13 +54,7 @@ class project_mission : public WorkflowTest {
   }
   void TearDown() override {
     ann_.reset();
-    server_.reset();
-    WorkflowTest::TearDown();
-  }
-  WebClient signed_in(const std::string& name, const std::string& password) {
-    WebClient client(server_->port());
-    EXPECT_TRUE(client.sign_in(name, password)) << name << ": " << client.last_refusal();
-    return client;
+    ServedWorkflowTest::TearDown();
   }
   Answer set_from_page(WebClient& client, const std::string& project, const json& mission) {
     return client.post("/api/projects/" + project + "/mission", {{"mission", mission}});
@@ -79,7 +73,6 @@ class project_mission : public WorkflowTest {
     EXPECT_EQ(error.find('\n'), std::string::npos) << "one line: " << error;
   }
 
-  std::optional<RunningServer> server_;
   std::optional<WebClient> ann_;
   std::string file_;  // ann's uploaded mission, as /api/missions names it
 };

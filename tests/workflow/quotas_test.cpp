@@ -12,7 +12,7 @@
 
 #include "web/web_client.hpp"
 #include "workflow/design_helpers.hpp"
-#include "workflow/workflow_fixture.hpp"
+#include "workflow/served_workflow.hpp"
 
 namespace sd::test {
 namespace {
@@ -20,10 +20,10 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-class quotas : public WorkflowTest {
+class quotas : public ServedWorkflowTest {
  protected:
   void SetUp() override {
-    WorkflowTest::SetUp();
+    ServedWorkflowTest::SetUp();
     user_with_active_project("boss", "lab");  // the home's first account: its administrator
     mission_ = write_short_mission(home() / "users" / "boss" / "projects" / "lab", 2);
     run_ok({"set-mission", mission_.string()});
@@ -34,23 +34,12 @@ class quotas : public WorkflowTest {
     run_ok({"select-project", "ann-work"});
     sign_in("boss", "boss-secret-pw");
   }
-  void TearDown() override {
-    server_.reset();
-    WorkflowTest::TearDown();
-  }
-  WebClient signed_in(const std::string& name, const std::string& password) {
-    if (!server_) server_.emplace(home());
-    WebClient client(server_->port());
-    EXPECT_TRUE(client.sign_in(name, password)) << name << ": " << client.last_refusal();
-    return client;
-  }
   json my_quota() { return json::parse(run_ok({"quota", "--json"})); }
   std::string mission_text() const {
     std::ifstream in(mission_);
     return std::string(std::istreambuf_iterator<char>(in), {});
   }
   fs::path mission_;
-  std::optional<RunningServer> server_;
 };
 
 TEST_F(quotas, AnAdministratorSetsTheDefaultAndAnAccountsOwnFromTheCliAndThePageAndTheUserSeesThem) {
