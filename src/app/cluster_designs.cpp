@@ -78,13 +78,16 @@ std::string last_line(const std::string& text) {
   return text.substr(start == std::string::npos ? 0 : start + 1, end - (start == std::string::npos ? 0 : start + 1) + 1);
 }
 
+/// How much of a job's log is read for its last line: a long design's log holds its whole progress.
+constexpr std::size_t kLogEndBytes = std::size_t{64} << 10;
+
 /// One line on a job that ended before its design finished.
 std::string ended_note(const cluster::Shell& shell, const storage::ClusterJob& job, const cluster::JobStatus& status) {
   const std::string again = "; run-design submits it again and it resumes from its last checkpoint";
   const std::string log = job.folder + "/slurm-" + job.job_id + ".out";
   std::string said;
   try {
-    if (const auto text = cluster::read_file(shell, log)) said = last_line(*text);
+    if (const auto text = cluster::read_file(shell, log, kLogEndBytes)) said = last_line(*text);
   } catch (const cluster::ClusterError&) {
   }
   const std::string j = "Slurm job " + job.job_id;

@@ -8,6 +8,7 @@
 #include "app/design_method.hpp"
 #include "app/evolution_job.hpp"
 #include "control/config_string.hpp"
+#include "core/bounded_file.hpp"
 #include "core/json_integer.hpp"
 
 namespace sd::app {
@@ -16,6 +17,8 @@ namespace {
 
 constexpr const char* kStateFile = "evolution.json";
 constexpr const char* kDocumentFile = "evostick.json";
+/// The network and one line per generation: a few hundred kB for the longest evolution.
+constexpr std::size_t kMaxDocumentBytes = std::size_t{16} << 20;
 
 /// The settings a budget buys: whole generations of the default population.
 evostick::Settings settings_for(std::int64_t budget, std::uint64_t seed) {
@@ -90,9 +93,13 @@ class EvoStick final : public DesignMethod {
   }
 
   nlohmann::json document(const std::filesystem::path& folder) const override {
-    std::ifstream in(folder / kDocumentFile);
-    if (!in) throw std::runtime_error("the EvoStick design in " + folder.string() + " has no " + kDocumentFile);
-    return nlohmann::json::parse(in);
+    try {  // read on its own by a server that shows the design: no link planted at its name followed
+      return nlohmann::json::parse(read_folder_file(folder, kDocumentFile, "EvoStick document", kMaxDocumentBytes).text);
+    } catch (const FileReadError& e) {
+      if (e.problem == FileProblem::Missing)
+        throw std::runtime_error("the EvoStick design in " + folder.string() + " has no " + kDocumentFile);
+      throw;
+    }
   }
 
   std::string describe(const storage::PlannedDesign&) const override { return std::string(info().title); }

@@ -60,7 +60,8 @@ NewDesignSettings interrupted_settings(const storage::Design& latest, const File
                              latest.seed, files, {}, std::string(kDefaultDesignSamples), {}, &search_method(latest.method)};
   const std::filesystem::path remembered = latest.folder / kPseudoRealityFile;
   if (!std::filesystem::exists(remembered)) return settings;
-  const nlohmann::json doc = nlohmann::json::parse(read_bounded_file(remembered, "pseudo-reality file").text);
+  const nlohmann::json doc =
+      nlohmann::json::parse(read_folder_file(latest.folder, kPseudoRealityFile, "pseudo-reality file").text);
   const NamedPseudoReality reality =
       pseudo_reality_from_document(doc.at("reference").get<std::string>(), doc.at("document").get<std::string>());
   // Resumed from its own copy: a shipped name or file edited since cannot change it.

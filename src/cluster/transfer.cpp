@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -69,7 +70,7 @@ void write_here(const Shell& shell, const std::string& path, const std::string& 
   }
 }
 
-std::optional<std::string> read_here(const Shell& shell, const std::string& path) {
+std::optional<std::string> read_here(const Shell& shell, const std::string& path, std::size_t max_bytes) {
   const fs::path file = local_path(path);
   std::error_code error;
   if (!fs::exists(file, error)) {
@@ -77,9 +78,14 @@ std::optional<std::string> read_here(const Shell& shell, const std::string& path
     return std::nullopt;
   }
   if (fs::is_directory(file, error)) fail("read", path, shell, "it is a folder");
-  std::ifstream in(file, std::ios::binary);
+  std::ifstream in(file, std::ios::binary | std::ios::ate);
   if (!in) fail("read", path, shell, std::generic_category().message(errno));
-  std::string content{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const auto size = static_cast<std::size_t>(std::max<std::streamoff>(0, in.tellg()));
+  const std::size_t start = size > max_bytes ? size - max_bytes : 0;
+  in.seekg(static_cast<std::streamoff>(start));
+  std::string content(size - start, '\0');
+  in.read(content.data(), static_cast<std::streamsize>(content.size()));
+  content.resize(static_cast<std::size_t>(std::max<std::streamsize>(0, in.gcount())));  // it may have shrunk since
   if (in.bad()) fail("read", path, shell, std::generic_category().message(errno));
   return content;
 }
@@ -133,11 +139,13 @@ void write_file(const Shell& shell, const std::string& path, const std::string& 
   if (result.exit_code != 0) fail("write", path, shell, reason(result));
 }
 
-std::optional<std::string> read_file(const Shell& shell, const std::string& path) {
-  if (shell.local()) return read_here(shell, path);
+std::optional<std::string> read_file(const Shell& shell, const std::string& path, std::size_t max_bytes) {
+  if (shell.local()) return read_here(shell, path, max_bytes);
   const std::string quoted = shell_path(path);
-  const CommandResult result =
-      shell.run_checked("if [ -e " + quoted + " ]; then exec cat " + quoted + "; else exit " + std::to_string(absent_status) + "; fi");
+  // A folder is refused as here: tail would say so in its own words, or read nothing.
+  const CommandResult result = shell.run_checked(
+      "if [ -d " + quoted + " ]; then echo 'it is a folder' >&2; exit 1; elif [ -e " + quoted + " ]; then exec tail -c " +
+      std::to_string(max_bytes) + " " + quoted + "; else exit " + std::to_string(absent_status) + "; fi");
   if (result.exit_code == absent_status) return std::nullopt;
   if (result.exit_code != 0) fail("read", path, shell, reason(result));
   return result.out;

@@ -2,6 +2,7 @@
 // Files on the cluster side, through a Shell: std::filesystem on this machine, sh commands
 // over ssh (content on stdin, a tar stream back). A leading "~/" in a path means the home
 // folder of the machine where the file is (see shell_path).
+#include <cstddef>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -17,8 +18,10 @@ namespace sd::cluster {
 /// half of it. ClusterError naming the path and the shell on failure.
 void write_file(const Shell& shell, const std::string& path, const std::string& content, bool executable = false);
 
-/// The content of `path`; nullopt when it does not exist; ClusterError when it cannot be read.
-std::optional<std::string> read_file(const Shell& shell, const std::string& path);
+/// The content of `path`, or only its last `max_bytes` bytes when it is longer (a job's log may
+/// hold a whole design's progress: a read is bounded, and the end is what is said); nullopt when
+/// it does not exist; ClusterError when it cannot be read.
+std::optional<std::string> read_file(const Shell& shell, const std::string& path, std::size_t max_bytes);
 
 bool exists(const Shell& shell, const std::string& path);
 

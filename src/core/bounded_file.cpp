@@ -87,4 +87,16 @@ FileText read_bounded_file(const std::filesystem::path& path, const std::string&
   return result;
 }
 
+FileText read_folder_file(const std::filesystem::path& folder, const std::string& name, const std::string& what,
+                          std::size_t max_bytes) {
+  // The folder's own path may go through links (a home under /data -> /mnt/...): it is resolved
+  // first, and the file must then be its direct entry of that name.
+  std::error_code error;
+  const std::filesystem::path real_folder = std::filesystem::canonical(folder, error);
+  const auto own_entry = [&](const std::filesystem::path& real) {
+    return !error && real.parent_path() == real_folder && real.filename() == name;
+  };
+  return read_bounded_file(folder / name, what, max_bytes, own_entry);
+}
+
 }  // namespace sd

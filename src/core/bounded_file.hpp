@@ -43,6 +43,13 @@ using PathRule = std::function<bool(const std::filesystem::path& real_path)>;
 FileText read_bounded_file(const std::filesystem::path& path, const std::string& what,
                            std::size_t max_bytes = kMaxInputFileBytes, const PathRule& allowed = {});
 
+/// A file the program keeps in a folder of its own and reads by itself, never one a user names
+/// (a design's assessment.json, its pseudo-reality.json): read as confined as a file a user
+/// names, to that folder's own entry, so that a link planted at its name, symbolic (anywhere)
+/// or hard (a second name of another account's file), is refused as Outside, never followed.
+FileText read_folder_file(const std::filesystem::path& folder, const std::string& name, const std::string& what,
+                          std::size_t max_bytes = kMaxInputFileBytes);
+
 /// True when `path` is `folder` or lies below it (both real paths).
 bool is_within(const std::filesystem::path& path, const std::filesystem::path& folder);
 

@@ -1,8 +1,9 @@
-// Files a server reads on its own, not because a user named them: a design's assessment.json
-// and design.db. Someone who can write into a design folder (the server's own Unix user, as
+// Files a server reads on its own, not because a user named them: a design's assessment.json,
+// design.db, pseudo-reality.json and EvoStick document. Someone who can write into a design folder (the server's own Unix user, as
 // the server makes its folders 0700) plants a symbolic or a hard link at their names, leading
 // to another account's file: the server must not serve or open what the link leads to.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <unistd.h>
 
 #include <filesystem>
@@ -10,6 +11,8 @@
 #include <string>
 
 #include "app/design_assessment.hpp"
+#include "app/design_method.hpp"
+#include "core/bounded_file.hpp"
 #include "storage/sqlite.hpp"
 
 namespace sd::test {
@@ -101,6 +104,49 @@ TEST_F(ServerReadFiles, ADesignDatabaseLinkedToAnotherIsNotOpened) {
   fs::create_symlink(theirs_, root_ / "bob-home-link");
   storage::Database through_a_folder_link(root_ / "bob-home-link" / "design.db", /*create=*/false);
   through_a_folder_link.execute("SELECT count(*) FROM race");
+}
+
+TEST_F(ServerReadFiles, EveryOtherFileOfADesignFolderIsReadOnlyAsTheFolderOwnEntry) {
+  // The names a server reads by itself in a design folder besides the two above.
+  for (const std::string name : {"pseudo-reality.json", "evostick.json", "assessment.json"}) {
+    SCOPED_TRACE(name);
+    std::ofstream(theirs_ / name) << R"({"secret": ")" << kSecret << R"("})";
+    const auto read = [&]() -> std::string {
+      try {
+        return read_folder_file(mine_, name, "file").text;
+      } catch (const FileReadError& e) {
+        return e.problem == FileProblem::Outside ? "outside" : e.problem == FileProblem::Missing ? "missing" : "other";
+      }
+    };
+    EXPECT_EQ(read(), "missing");
+    fs::create_symlink(theirs_ / name, mine_ / name);
+    EXPECT_EQ(read(), "outside");
+    fs::remove(mine_ / name);
+    fs::create_hard_link(theirs_ / name, mine_ / name);
+    EXPECT_EQ(read(), "outside");
+    fs::remove(mine_ / name);
+    // A link to a file of the same folder, under the same name from elsewhere, is not it either.
+    fs::create_symlink(mine_ / "other.json", mine_ / name);
+    std::ofstream(mine_ / "other.json") << "{}";
+    EXPECT_EQ(read(), "outside");
+    fs::remove(mine_ / name);
+    std::ofstream(mine_ / name) << R"({"mine": 1})";
+    EXPECT_EQ(read(), R"({"mine": 1})");
+    // The folder's own path may go through a link (where an administrator put a home).
+    fs::create_directory_symlink(mine_, root_ / "alice-link");
+    EXPECT_EQ(read_folder_file(root_ / "alice-link", name, "file").text, R"({"mine": 1})");
+    fs::remove(root_ / "alice-link");
+    fs::remove(mine_ / name);
+    fs::remove(mine_ / "other.json");
+  }
+  // What the page's monitor shows of an EvoStick design goes through it: a planted link is refused.
+  fs::create_symlink(theirs_ / "evostick.json", mine_ / "evostick.json");
+  try {
+    const nlohmann::json served = app::design_method("evostick").document(mine_);
+    ADD_FAILURE() << "served " << served.dump();
+  } catch (const std::exception& e) {
+    EXPECT_EQ(std::string(e.what()).find(kSecret), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

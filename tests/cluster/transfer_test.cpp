@@ -14,6 +14,8 @@ using test_support::read_text;
 using test_support::TempFolder;
 using test_support::write_text;
 
+constexpr std::size_t kWhole = std::size_t{1} << 20;
+
 std::string every_byte() {
   std::string bytes;
   for (int repeat = 0; repeat < 300; ++repeat)
@@ -33,12 +35,20 @@ TEST_P(Transfer, WritesCreatingFoldersAndReadsBackBinaryContent) {
   const std::string content = every_byte();
   write_file(shell, at("a/b c/data.bin"), content);
   EXPECT_EQ(read_text(folder.path / "a/b c/data.bin"), content);
-  EXPECT_EQ(read_file(shell, at("a/b c/data.bin")), content);
+  EXPECT_EQ(read_file(shell, at("a/b c/data.bin"), kWhole), content);
   write_file(shell, at("a/b c/data.bin"), "shorter");
-  EXPECT_EQ(read_file(shell, at("a/b c/data.bin")), "shorter");
+  EXPECT_EQ(read_file(shell, at("a/b c/data.bin"), kWhole), "shorter");
   write_file(shell, at("empty"), "");
-  EXPECT_EQ(read_file(shell, at("empty")), "");
+  EXPECT_EQ(read_file(shell, at("empty"), kWhole), "");
   EXPECT_FALSE(fs::exists(folder.path / "a/b c/data.bin.swarmdesign-part"));
+}
+
+TEST_P(Transfer, AReadIsBoundedToTheFilesEnd) {
+  const std::string content = every_byte();  // 76 800 bytes
+  write_file(shell, at("log"), content);
+  EXPECT_EQ(read_file(shell, at("log"), 1000), content.substr(content.size() - 1000));
+  EXPECT_EQ(read_file(shell, at("log"), content.size()), content);
+  EXPECT_EQ(read_file(shell, at("log"), 0), "");
 }
 
 TEST_P(Transfer, MakesFilesExecutableWhenAsked) {
@@ -53,7 +63,7 @@ TEST_P(Transfer, TellsWhatExists) {
   EXPECT_TRUE(exists(shell, at("here.txt")));
   EXPECT_TRUE(exists(shell, folder.path.string()));
   EXPECT_FALSE(exists(shell, at("absent.txt")));
-  EXPECT_EQ(read_file(shell, at("absent.txt")), std::nullopt);
+  EXPECT_EQ(read_file(shell, at("absent.txt"), kWhole), std::nullopt);
 }
 
 TEST_P(Transfer, ReportsWhatCannotBeWrittenOrRead) {
@@ -66,7 +76,7 @@ TEST_P(Transfer, ReportsWhatCannotBeWrittenOrRead) {
     EXPECT_EQ(message.rfind("cannot write " + at("file/inside") + " on " + shell.describe() + ": ", 0), 0u) << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
   }
-  EXPECT_THROW(read_file(shell, folder.path.string()), ClusterError);  // a folder
+  EXPECT_THROW(read_file(shell, folder.path.string(), kWhole), ClusterError);  // a folder
 }
 
 TEST_P(Transfer, FetchesAFolderReplacingFilesOfTheSameName) {
@@ -96,7 +106,7 @@ TEST_P(Transfer, ExpandsALeadingTildeOnTheSideWhereTheFileIs) {
   write_file(tilde_shell, "~/from tilde/x.txt", "tilde");
   EXPECT_EQ(read_text(folder.path / "from tilde/x.txt"), "tilde");
   EXPECT_TRUE(exists(tilde_shell, "~/from tilde"));
-  EXPECT_EQ(read_file(tilde_shell, "~/from tilde/x.txt"), "tilde");
+  EXPECT_EQ(read_file(tilde_shell, "~/from tilde/x.txt", kWhole), "tilde");
   fetch_folder(tilde_shell, "~/from tilde", folder.path / "copy");
   EXPECT_EQ(read_text(folder.path / "copy/x.txt"), "tilde");
 }
