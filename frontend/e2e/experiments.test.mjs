@@ -96,6 +96,8 @@ test('an own protocol starts, is followed, stopped, resumed and finished, with i
   await page.waitForFunction(() => /^Showing the design experiment quick is making/.test(document.querySelector('[data-testid="opened-note"]')?.textContent || ''));
   await page.waitForFunction(() => document.querySelectorAll('#elites tbody tr[data-testid^="elite-"]').length > 0, null, { timeout: 60000 });
   assert.match(await page.textContent('#runs-used'), /^\d+ \/ 6000$/);
+  // Its best is drawn as a design's is.
+  await page.waitForFunction(() => window.__sd.monitor.bestDrawing().nodes > 0, null, { timeout: 30000 });
   await shot(page, 'experiment-design-watched');
   await page.click('[data-testid="exp-stop-quick"]');
   await page.waitForFunction(() => document.querySelector('[data-testid="exp-state-quick"]')?.textContent === 'interrupted', null, { timeout: 60000 });
@@ -103,6 +105,12 @@ test('an own protocol starts, is followed, stopped, resumed and finished, with i
   await page.click('[data-testid="exp-resume-quick"]');
   await page.waitForFunction(() => document.querySelector('[data-testid="exp-state-quick"]')?.textContent === 'finished', null, { timeout: 240000, polling: 500 });
   assert.match(await page.textContent('[data-testid="exp-progress-quick"]'), /^2 \/ 2 designs done$/);
+  // Its designs all done, the monitor is back on the project, which has no design of its own:
+  // nothing is drawn under "no configuration yet" (the experiment's last best stayed there).
+  await page.waitForFunction(() => !document.querySelector('[data-testid="opened-note"]'), null, { timeout: 30000 });
+  assert.equal(await page.textContent('#design-state'), 'no design yet');
+  assert.equal(await page.textContent('#best-score'), 'no configuration yet');
+  assert.deepEqual(await page.evaluate(() => window.__sd.monitor.bestDrawing()), { nodes: 0, drawn: null });
   await shot(page, 'finished');
   // report.json downloads as the server writes it.
   const [download] = await Promise.all([page.waitForEvent('download'), page.click('[data-testid="report-json-quick"]')]);

@@ -211,6 +211,7 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
       if (plot) plot.setData([], []);
       showConvergence(false);
       $('best-score').textContent = 'no configuration yet';
+      clearBest();
       for (const id of ['watch-best', 'edit-best', 'test-run', 'argos-best']) $(id).disabled = true;
       refreshAssessment(null, false);
       testTarget = null;
@@ -274,12 +275,20 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
       $(id).dataset.text = best || '';
       $(id).dataset.mission = design.mission || '';
     }
+    // No best yet (a design just started, or a fresh one after another): no drawing either, not
+    // the previous design's under "no configuration yet".
+    if (!best && bestDrawn !== null) clearBest();
     if (best && best !== bestDrawn) {
       bestDrawn = best;
       api('/api/parse', { body: { text: best }, quiet: true })
         .then((answer) => { if (bestDrawn === best) { renderModel(graph, answer.software, { relayout: true }); graph.fit(undefined, 10); } })
         .catch(() => {});
     }
+  }
+
+  function clearBest() {
+    bestDrawn = null;
+    graph.elements().remove();
   }
 
   /// The server refuses a new mission while a design runs (it keeps the one it started with).
@@ -537,5 +546,6 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
     select,
     get status() { return status; },
     convergence() { return plot ? { xs: [...plot.plot.data[0]], ticks: plot.xTicks() } : null; },
+    bestDrawing() { return { nodes: graph.nodes().length, drawn: bestDrawn }; },
   };
 }
