@@ -99,8 +99,11 @@ test('an own protocol starts, is followed, stopped, resumed and finished, with i
   // Its best is drawn as a design's is.
   await page.waitForFunction(() => window.__sd.monitor.bestDrawing().nodes > 0, null, { timeout: 30000 });
   await shot(page, 'experiment-design-watched');
+  assert.match(await page.textContent('[data-testid="exp-started"]'), /^quick started on this server$/);
   await page.click('[data-testid="exp-stop-quick"]');
   await page.waitForFunction(() => document.querySelector('[data-testid="exp-state-quick"]')?.textContent === 'interrupted', null, { timeout: 60000 });
+  // "started on this server" went with it: the list says how it stands.
+  await page.waitForFunction(() => !document.querySelector('[data-testid="exp-started"]'), null, { timeout: 10000 });
   await shot(page, 'stopped');
   await page.click('[data-testid="exp-resume-quick"]');
   await page.waitForFunction(() => document.querySelector('[data-testid="exp-state-quick"]')?.textContent === 'finished', null, { timeout: 240000, polling: 500 });

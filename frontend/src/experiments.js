@@ -27,6 +27,7 @@ function estimateText(estimate) {
 export function initExperiments({ project, onChanged, onFollow }) {
   let protocols = [];
   let ownText = null;  // the user's protocol file, as read
+  let startedHere = null;  // the experiment the message under the form says was started
 
   const chosen = () => $('exp-protocol').value;
   const current = () => (chosen() === 'own' ? null : protocols.find((p) => p.name === chosen()));
@@ -85,6 +86,7 @@ export function initExperiments({ project, onChanged, onFollow }) {
         el('div', { testid: 'exp-plan-estimate', text: estimateText(answer.estimate) }),
         ...answer.notes.map((n) => el('div', { class: 'muted', text: n })));
       } else {
+        startedHere = answer.already_finished ? null : answer.experiment.name;
         out.replaceChildren(el('div', { testid: 'exp-started', text: `${answer.experiment.name} ${answer.already_finished ? 'had already finished' : answer.resumed ? 'resumed' : 'started'} ${answer.where === 'slurm' ? 'as a Slurm job array' : 'on this server'}` }),
           ...answer.notes.map((n) => el('div', { class: 'muted', text: n })));
         clearError();  // a refusal shown before is stale
@@ -104,6 +106,12 @@ export function initExperiments({ project, onChanged, onFollow }) {
 
   /// The list, as each poll of the monitor brings it.
   function render(list) {
+    // "NAME started on this server" holds while it runs; once it has ended the list says how.
+    const started = startedHere && list.find((e) => e.name === startedHere);
+    if (started && started.state !== 'running') {
+      startedHere = null;
+      if ($('exp-plan').querySelector('[data-testid="exp-started"]')) $('exp-plan').replaceChildren();
+    }
     $('experiment-list').replaceChildren(...list.map((e) => {
       const href = `/api/projects/${encodeURIComponent(project())}/experiments/${encodeURIComponent(e.name)}`;
       const c = e.current;
