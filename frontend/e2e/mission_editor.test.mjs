@@ -49,7 +49,7 @@ test('a mission from AAC, changed in the form, is drawn live and saved as JSON t
   await page.waitForFunction(() => document.querySelectorAll('#me-template option').length > 10);
   await page.waitForFunction(() => document.getElementById('me-project').value === 'lab');
   await after_(() => page.selectOption('#me-template', 'aac'));
-  assert.match(await status(), /^Aggregation with ambient cues: 20 robots, 120 s/);
+  assert.match(await status(), /^Aggregation with ambient cues \(copy\): 20 robots, 120 s/);
   assert.equal(await page.inputValue('[data-testid="me-file-name"]'), 'my-aac');
   const drawn = await page.innerHTML('#me-drawing');
   assert.match(drawn, /^<svg/);
@@ -71,6 +71,9 @@ test('a mission from AAC, changed in the form, is drawn live and saved as JSON t
   assert.equal(doc.arena.floor.patches.length, 3);
   assert.equal(doc.arena.lights.length, 2);
   assert.equal(doc.objective.type, 'best_region_fraction_at_end');
+  // Scored on this floor's black patches (AAC's and the one added), not the example's regions.
+  assert.deepEqual(doc.objective.regions, doc.arena.floor.patches.filter((p) => p.color === 'black').map((p) => p.region));
+  assert.equal(doc.objective.regions.length, 2);
   await shot(page, 'edited');
 
   await page.click('#me-save');

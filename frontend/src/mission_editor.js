@@ -118,7 +118,7 @@ export function initMissionEditor({ onSaved }) {
       field('intensity', l.intensity ?? 1, (v) => { l.intensity = num(v, 1); changed(); }),
       el('button', { type: 'button', class: 'icon', text: '✕', title: 'remove this light', onclick: () => { doc.arena.lights.splice(i, 1); again(); } })));
 
-    const objective = el('select', { testid: 'me-objective', onchange: (e) => { doc.objective = structuredClone(objectives.get(e.target.value)); again(); } },
+    const objective = el('select', { testid: 'me-objective', onchange: (e) => { doc.objective = fitted(objectives.get(e.target.value), floor.patches); again(); } },
       ...[...objectives.keys()].map((k) => el('option', { value: k, text: k.replaceAll('_', ' ') })));
     if (doc.objective && !objectives.has(doc.objective.type)) objective.append(el('option', { value: doc.objective.type, text: doc.objective.type }));
     objective.value = doc.objective ? doc.objective.type : '';
@@ -146,7 +146,23 @@ export function initMissionEditor({ onSaved }) {
         (region, redraw) => { doc.start = region; if (redraw) again(); else changed(); })),
       el('h4', { text: 'Objective' }),
       el('div', { class: 'me-row' }, objective, direction),
-      el('p', { class: 'muted small', text: 'Its regions and other parameters are in the JSON below (objective), as the missions reference describes them.' }));
+      el('p', { class: 'muted small', text: 'A kind chosen here scores on this floor: its regions are the black patches (a foraging objective\'s sources; its nest stays the example\'s). Its other parameters are in the JSON below (objective), as the missions reference describes them.' }));
+  }
+
+  /// An objective of another mission's kind, its regions taken from this mission's floor: the
+  /// example's regions belong to its own arena (another mission's black circles, say), and the
+  /// mission edited would score robots on areas it does not have.
+  function fitted(example, patches) {
+    const objective = structuredClone(example);
+    const black = patches.filter((p) => p.color === 'black').map((p) => structuredClone(p.region));
+    if (!black.length) return objective;
+    if (objective.region) objective.region = black[0];
+    if (Array.isArray(objective.regions)) objective.regions = black;
+    if (Array.isArray(objective.sources)) {
+      const value = objective.sources.length ? objective.sources[0].value : 1;
+      objective.sources = black.map((region) => ({ region, value }));
+    }
+    return objective;
   }
 
   /// Four boxes around a w × h rectangle centred on the origin.
@@ -206,6 +222,8 @@ export function initMissionEditor({ onSaved }) {
       doc = JSON.parse(stripComments(answer.text));
       delete doc.argos;  // the ARGoS loop functions score the original, not this mission
       doc.name = `my-${answer.name.replace(/[^A-Za-z0-9_-]/g, '-')}`.slice(0, 64);
+      // Its own title, so that the missions list tells the copy from the original.
+      doc.title = `${doc.title || answer.name} (copy)`;
       $('me-name').value = doc.name;
       renderForm();
       changed();
