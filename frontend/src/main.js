@@ -96,7 +96,8 @@ whenUnauthorized(() => showSignIn(startApp));
     await startApp(session.user);
     if (invited) showError(`You are signed in as ${session.user}: to sign up with this invitation, sign out and open its link again.`);
   } catch (e) {
-    if (e.status === 401 || e.status === 0) showSignIn(startApp);
-    else showError(e.message);
+    // A 401 has shown the sign-in page already (whenUnauthorized); no answer at all has not.
+    if (e.status === 0) showSignIn(startApp);
+    else if (e.status !== 401) showError(e.message);
   }
 })();

@@ -99,7 +99,7 @@ export function showSignIn(onSignedIn) {
   $('signup-show-signin').onclick = () => showForm(false);
 
   showForm(false);
-  const taken = takeInvitationFromAddress();  // (called twice on a first load: the 401 and its catch)
+  const taken = takeInvitationFromAddress();
   if (taken !== null) pending = taken;
   delete page.dataset.signUp;
   useInvitation = null;
