@@ -11,6 +11,7 @@ export class ApiError extends Error {
   constructor(status, body) {
     super(body && body.error ? body.error : `HTTP ${status}`);
     this.status = status;
+    this.quota = body && body.quota;  // "disk" or "runs": a refusal past the account's quota
     this.body = body || {};
   }
 }

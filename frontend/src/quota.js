@@ -48,7 +48,7 @@ export async function refreshQuota() {
 }
 
 /// Was `error` (an ApiError) a quota's refusal?
-export const isQuotaRefusal = (error) => !!error && error.status === 409 && /^(disk|runs) quota: /.test(error.message);
+export const isQuotaRefusal = (error) => !!error && error.status === 409 && Boolean(error.quota);
 
 /// For a form that shows its own errors (quiet requests): a quota's refusal also goes to the
 /// toast, and the line is read again. True when it was one.

@@ -45,6 +45,7 @@ from ._core import (
     Mission,
     MissionError,
     NotFoundError,
+    QuotaExceededError,
     SwarmDesignError,
 )
 
@@ -54,7 +55,7 @@ __all__ = [
     "AccessDeniedError", "Account", "Assessment", "assess", "ConfigError", "ConflictError", "ControlSoftware", "Design",
     "DesignFolderError", "DesignResult", "ExperimentReport", "ExportError", "FLAVOURS",
     "InvalidRequestError", "MAX_SEEDS", "MAX_SEED_BOUND", "MAX_THREADS", "Mission", "MissionError", "NotFoundError",
-    "SwarmDesignError", "Trace", "design", "design_methods", "evaluate", "missions", "module_catalogue", "pseudo_realities",
+    "QuotaExceededError", "SwarmDesignError", "Trace", "design", "design_methods", "evaluate", "missions", "module_catalogue", "pseudo_realities",
     "pseudo_reality_samples",
     "resume_design", "trace",
 ]

@@ -85,7 +85,7 @@ void require_room_for_file(Home& home, const storage::User& user, const fs::path
   const std::uint64_t more = bytes - replaced;
   if (bytes == 0 ? used < cap : used + more <= cap) return;
   const std::string needs = bytes == 0 ? "" : "this needs " + bytes_text(more) + " more, and ";
-  throw QuotaExceeded("disk quota: " + needs + user.name + " uses " + bytes_text(used) + " of " + bytes_text(cap) +
+  throw QuotaExceeded("disk", "disk quota: " + needs + user.name + " uses " + bytes_text(used) + " of " + bytes_text(cap) +
                       "; delete designs or files, or ask an administrator");
 }
 
@@ -99,7 +99,7 @@ RunReservation::RunReservation(Home& home, const storage::User& user, std::int64
   const auto limit = storage::limits_in_force(db, user.id).runs_per_day;
   const std::int64_t used = storage::runs_on(db, user.id, day_);
   if (limit && runs > 0 && used + runs > *limit)
-    throw QuotaExceeded("runs quota: " + what + " needs " + std::to_string(runs) + " runs, and " + user.name + " has " +
+    throw QuotaExceeded("runs", "runs quota: " + what + " needs " + std::to_string(runs) + " runs, and " + user.name + " has " +
                         std::to_string(std::max<std::int64_t>(0, *limit - used)) + " of " + std::to_string(*limit) +
                         " runs left today (UTC); ask an administrator, or wait until tomorrow");
 }

@@ -19,9 +19,12 @@
 
 namespace sd::app {
 
-/// Work refused because it would pass the account's quota (a server answers 409).
+/// Work refused because it would pass the account's quota: a Conflict (a server answers 409,
+/// the CLI exits 1) that says which quota, for scripts: the page's `"quota"`, Python's
+/// QuotaExceededError.quota.
 struct QuotaExceeded : storage::Conflict {
-  using storage::Conflict::Conflict;
+  QuotaExceeded(const char* which, const std::string& message) : storage::Conflict(message), quota(which) {}
+  const char* quota;  // "disk" or "runs"
 };
 
 struct QuotaUse {

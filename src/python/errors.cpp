@@ -6,6 +6,7 @@
 //       ConfigError                           a malformed configuration string
 //       ExportError                           control software a code base cannot read
 //     NotFoundError (also LookupError), ConflictError, AccessDeniedError, DesignFolderError
+//       QuotaExceededError (a ConflictError)   past the account's quota; .quota: "disk" or "runs"
 #include <pybind11/pybind11.h>
 
 #include <algorithm>
@@ -14,6 +15,7 @@
 #include <string>
 
 #include "app/errors.hpp"
+#include "app/quotas.hpp"
 #include "control/config_string.hpp"
 #include "core/bounded_file.hpp"
 #include "experiments/protocol.hpp"
@@ -35,6 +37,7 @@ struct Classes {
   PyObject* export_refused = nullptr;
   PyObject* not_found = nullptr;
   PyObject* conflict = nullptr;
+  PyObject* quota = nullptr;
   PyObject* access_denied = nullptr;
   PyObject* design_folder = nullptr;
 };
@@ -58,6 +61,13 @@ void set_error(PyObject* type, const char* what) {
   PyErr_SetString(type, line.c_str());
 }
 
+/// The exception with its `quota` attribute set, as the page's answer has its "quota" field.
+void set_quota_error(PyObject* type, const app::QuotaExceeded& e) {
+  py::object error = py::reinterpret_borrow<py::object>(type)(std::string(e.what()));
+  error.attr("quota") = e.quota;
+  PyErr_SetObject(type, error.ptr());
+}
+
 }  // namespace
 
 void bind_errors(py::module_& module) {
@@ -79,6 +89,9 @@ void bind_errors(py::module_& module) {
   c.not_found = make_class(module, "NotFoundError", "No such thing (project, design, experiment, file).",
                            py::make_tuple(base, lookup_error));
   c.conflict = make_class(module, "ConflictError", "The name is taken, or the thing is busy.", py::make_tuple(base));
+  c.quota = make_class(module, "QuotaExceededError",
+                       "Work or a file past the account's quota; its `quota` attribute says which: 'disk' or 'runs'.",
+                       py::make_tuple(py::handle(c.conflict)));
   c.access_denied = make_class(module, "AccessDeniedError", "Not signed in, or a wrong password.", py::make_tuple(base));
   c.design_folder = make_class(module, "DesignFolderError",
                                "A design folder that cannot be used as asked (not a design, damaged, finished, ...).",
@@ -106,6 +119,8 @@ void bind_errors(py::module_& module) {
       set_error(k.export_refused, e.what());
     } catch (const app::NotFound& e) {
       set_error(k.not_found, e.what());
+    } catch (const app::QuotaExceeded& e) {
+      set_quota_error(k.quota, e);
     } catch (const app::Conflict& e) {
       set_error(k.conflict, e.what());
     } catch (const app::AccessDenied& e) {

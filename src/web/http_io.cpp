@@ -4,6 +4,7 @@
 
 #include <iostream>
 
+#include "app/quotas.hpp"
 #include "core/json_syntax.hpp"
 
 namespace sd::web {
@@ -78,7 +79,9 @@ void send_error(httplib::Response& response, const std::exception& error, const 
     send_json(response, {{"error", "the server failed: " + without_server_paths(error.what(), home)}}, 500);
     return;
   }
-  send_json(response, {{"error", without_server_paths(error.what(), home)}}, http_status(kind));
+  nlohmann::json body{{"error", without_server_paths(error.what(), home)}};
+  if (const auto* quota = dynamic_cast<const app::QuotaExceeded*>(&error)) body["quota"] = quota->quota;
+  send_json(response, body, http_status(kind));
 }
 
 const char* alias_or(const nlohmann::json& body, const char* key, const char* old_key) {

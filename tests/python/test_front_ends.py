@@ -160,6 +160,15 @@ def test_the_quota_is_the_clis_document_with_the_designs_runs_reserved(account):
     assert quota == json.loads(run_cli("quota", "--json"))
     assert quota["runs_today"] >= 2 * 1100, "the fixture's two designs reserved their budgets"
     assert quota["disk_bytes"] > 0 and quota["disk_from_default"] and quota["runs_from_default"]
+    # Past it, work is refused with the quota named, as the page's 409 names it ("quota": "runs").
+    run_cli("admin", "quota", "py-front", "--runs-per-day", quota["runs_today"])  # the first account: its administrator
+    try:
+        with pytest.raises(sd.QuotaExceededError, match="^runs quota: this experiment needs") as refused:
+            account.run_experiment(text=mini_protocol(account, "py-over-quota"))
+        assert refused.value.quota == "runs" and isinstance(refused.value, sd.ConflictError)
+        assert account.quota()["runs_today"] == quota["runs_today"], "a refused start counts nothing"
+    finally:
+        run_cli("admin", "quota", "py-front", "--runs-per-day", "default")
 
 
 def test_an_experiments_plan_is_the_clis_document(account, tmp_path):

@@ -125,6 +125,7 @@ TEST_F(quotas, AFileOrADesignPastTheDiskQuotaIsRefusedInOneLineAndNothingIsWritt
   WebClient ann = signed_in("ann", "ann-secret-pw");
   const Answer refused = ann.post("/api/projects/ann-work/missions", {{"name", "mine"}, {"text", text}});
   EXPECT_EQ(refused.status, 409);
+  EXPECT_EQ(refused.body["quota"], "disk") << "which quota, for scripts";
   EXPECT_NE(refused.body["error"].get<std::string>().find("disk quota: this needs"), std::string::npos) << refused.text;
   EXPECT_EQ(refused.body["error"].get<std::string>().find(home().string()), std::string::npos) << "no server path";
   EXPECT_FALSE(fs::exists(ann_folder / "missions" / "mine.json"));
@@ -141,6 +142,7 @@ TEST_F(quotas, AFileOrADesignPastTheDiskQuotaIsRefusedInOneLineAndNothingIsWritt
   // Over its limit, no design starts, from the page or the CLI.
   const Answer design = ann.post("/api/projects/ann-work/designs", json::object());
   EXPECT_EQ(design.status, 409);
+  EXPECT_EQ(design.body["quota"], "disk");
   EXPECT_NE(design.body["error"].get<std::string>().find("disk quota: ann uses"), std::string::npos) << design.text;
   sign_in("ann", "ann-secret-pw");
   run_ok({"set-mission", (ann_folder / "missions" / "mine.json").string()});
