@@ -13,6 +13,7 @@
 #include "app/accounts.hpp"
 #include "app/projects.hpp"
 #include "storage/designs.hpp"
+#include "storage/projects.hpp"
 #include "cli/command_registry.hpp"
 
 namespace sd::cli::delete_commands {
@@ -37,11 +38,17 @@ std::string ask(const std::string& question) {
 void delete_project(const Options& o) {
   app::Home home;
   const storage::User user = app::signed_in_user(home);
-  app::project_or_active(home, user, o.project);  // an unknown project is said before asking
+  const storage::Project project = app::project_or_active(home, user, o.project);  // an unknown one is said before asking
+  // The projects whose mission is one of its files: they are left without one, so say which.
+  std::string users_of_its_missions;
+  for (const std::string& name : app::projects_using_missions_of(project, storage::Projects(home.workspace(), user).list()))
+    users_of_its_missions += (users_of_its_missions.empty() ? "" : ", ") + name;
+  const std::string left_without = users_of_its_missions.empty() ? ""
+      : "Project(s) " + users_of_its_missions + " take their mission from it: each then needs another (set-mission).\n";
   std::string confirmation = o.project;
   if (!o.yes)
-    confirmation = ask("This deletes project " + o.project + " with all its designs, experiments and files.\n"
-                       "Type its name to delete it: ");
+    confirmation = ask("This deletes project " + o.project + " with all its designs, experiments and files.\n" +
+                       left_without + "Type its name to delete it: ");
   if (confirmation != o.project) {
     std::cerr << "Nothing deleted: '" << confirmation << "' is not the project's name.\n";
     throw CLI::RuntimeError(1);
@@ -50,7 +57,7 @@ void delete_project(const Options& o) {
   if (o.json)
     std::cout << nlohmann::json{{"deleted", o.project}}.dump(2) << '\n';
   else
-    std::cout << "Deleted project " << o.project << ".\n";
+    std::cout << "Deleted project " << o.project << ".\n" << left_without;
 }
 
 void delete_design(const Options& o) {

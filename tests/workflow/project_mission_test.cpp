@@ -208,5 +208,14 @@ TEST_F(project_mission, DeletingAProjectNamesTheProjectsUsingItsMissionWhichThen
                          120s));
 }
 
+TEST_F(project_mission, TheCliSaysWhichProjectsTakeTheirMissionFromTheProjectItDeletes) {
+  run_ok({"set-mission", file_});  // "user", the active project, on holder's file
+  run_ok({"new-project", "spare"});
+  EXPECT_EQ(run_ok({"delete-project", "spare", "--yes"}), "Deleted project spare.\n") << "none uses its files";
+  EXPECT_EQ(run_ok({"delete-project", "holder", "--yes"}),
+            "Deleted project holder.\nProject(s) user take their mission from it: each then needs another (set-mission).\n");
+  EXPECT_NE(run_ok({"active-project"}).find("its mission file was deleted"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace sd::test
