@@ -1,5 +1,6 @@
 #include "storage/schema.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <string>
@@ -277,14 +278,17 @@ int schema_version(Database& db) {
   return static_cast<int>(statement.integer(0));
 }
 
-void migrate(Database& db) {
+void migrate(Database& db) { migrate_to(db, latest_schema_version()); }
+
+void migrate_to(Database& db, int version) {
   const int latest = latest_schema_version();
+  const int target = std::min(version, latest);
   while (true) {
-    if (schema_version(db) >= latest) break;  // cheap check outside the write lock
+    if (schema_version(db) >= target) break;  // cheap check outside the write lock
     Transaction transaction(db);
     // Another process may have migrated while we waited for the lock: read again.
     const int current = schema_version(db);
-    if (current >= latest) break;
+    if (current >= target) break;
     db.execute(kMigrations[static_cast<std::size_t>(current)]);
     // A migration that edits a table's text (9) must make connections read the schema again;
     // after any other, one more schema change changes nothing.
