@@ -164,9 +164,11 @@ test('a password against the rule leaves the invitation unused; once revoked, it
   await boss.waitForSelector('[data-testid="confirm-dialog"]');
   await shot(boss, 'revoke-confirm');
   await boss.click('[data-testid="confirm-ok"]');
-  await boss.waitForFunction((id) => !document.querySelector(`[data-testid="invitation-row-${id}"]`), made.id);
+  // It stays listed, revoked, with nothing left to do to it.
+  await boss.waitForFunction((id) => document.querySelector(`[data-testid="invitation-state-${id}"]`)?.textContent === 'revoked', made.id);
   assert.equal(await boss.textContent('[data-testid="invite-note"]'), `invitation ${made.id} revoked`);
-  assert.equal(listed().some((i) => i.id === made.id), false);
+  assert.equal(await boss.$(`[data-testid="invitation-revoke-${made.id}"]`), null);
+  assert.equal(listed().find((i) => i.id === made.id).state, 'revoked');
   await shot(boss, 'invitations-table');
 
   await fillSignUp(page, 'third', 'third-secret-1');

@@ -82,7 +82,11 @@ nlohmann::json invitations_document(const std::vector<storage::InvitationRow>& r
                     {"expires_at", r.expires_at},
                     {"used_by", optional_json(r.used_by)},
                     {"used_at", optional_json(r.used_at)},
-                    {"state", r.used_at ? "used" : (r.expires_at <= now ? "expired" : "open")}});
+                    {"revoked_at", optional_json(r.revoked_at)},
+                    {"state", r.used_at      ? "used"
+                              : r.revoked_at ? "revoked"
+                              : r.expires_at <= now ? "expired"
+                                                    : "open"}});
   return list;
 }
 

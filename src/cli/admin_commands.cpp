@@ -287,7 +287,7 @@ CommandRegistrar registrar{70, [](CLI::App& app, Context&) {
   inv->footer("For a server run with `swarmdesign run-exp --sign-up invite`: whoever brings the code signs up\n"
               "once, before it expires. Only its hash is stored.\n\nExample:\n  swarmdesign admin invite --days 14");
   inv->callback([o] { invite(*o); });
-  auto* invs = admin->add_subcommand("invitations", "List the invitations: open, used (by whom) or expired");
+  auto* invs = admin->add_subcommand("invitations", "List the invitations: open, used (by whom), revoked or expired");
   invs->add_flag("--json", o->json, "Print one JSON document");
   invs->callback([o] { list_invitations(*o); });
   auto* rev = admin->add_subcommand("revoke-invitation", "Revoke an unused invitation");

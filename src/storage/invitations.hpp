@@ -27,13 +27,14 @@ struct InvitationRow {
   std::optional<std::string> created_by, used_by;  // account names (nullopt: none, or deleted)
   std::int64_t created_at = 0, expires_at = 0;
   std::optional<std::int64_t> used_at;
+  std::optional<std::int64_t> revoked_at;
 };
 
 NewInvitation create_invitation(Database& db, std::int64_t admin_id, std::int64_t lifetime_seconds);
 std::vector<InvitationRow> invitation_rows(Database& db);
-/// NotFound for an unknown id or one already used.
+/// Marks it revoked (it stays listed); NotFound for an unknown id or one already used or revoked.
 void revoke_invitation(Database& db, std::int64_t id);
-/// Whether the code opens a sign-up now (unused, unexpired); reads only.
+/// Whether the code opens a sign-up now (unused, unrevoked, unexpired); reads only.
 bool invitation_open(Database& db, std::string_view code, std::int64_t now);
 /// Marks the code used by `user`, inside the caller's transaction (create_user's `also`);
 /// AccessDenied when it no longer opens a sign-up (used meanwhile, expired).

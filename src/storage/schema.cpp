@@ -266,6 +266,11 @@ CREATE TABLE invitations (
   used_at    INTEGER
 );
 )sql",
+    // 12: a revoked invitation is kept, marked, rather than deleted: the administrators' list
+    // says what became of every code they handed out.
+    R"sql(
+ALTER TABLE invitations ADD COLUMN revoked_at INTEGER;
+)sql",
 };
 
 }  // namespace

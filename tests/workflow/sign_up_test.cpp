@@ -112,13 +112,24 @@ TEST_F(sign_up, AnInvitationSignsUpOnePersonOnceAndNothingElseDoes) {
   ASSERT_EQ(second.status, 200) << second.text;
   EXPECT_EQ(boss.post("/api/admin/invitations", {{"days", 365}}).status, 400);
   EXPECT_EQ(boss.post("/api/admin/invitations", {{"days", "many"}}).status, 400);
-  ASSERT_EQ(boss.post("/api/admin/invitations/" + std::to_string(second.body.at("id").get<int>()) + "/revoke", json::object()).status, 200);
+  const std::string revoke = "/api/admin/invitations/" + std::to_string(second.body.at("id").get<int>()) + "/revoke";
+  ASSERT_EQ(boss.post(revoke, json::object()).status, 200);
   EXPECT_EQ(client().sign_up(request("cid", second.body.at("code"))).status, 403);
+  // Kept in the list as revoked, and revoked once.
+  const json after_revoke = json::parse(run_ok({"admin", "invitations", "--json"}));
+  EXPECT_EQ(after_revoke.at(1).at("state"), "revoked");
+  EXPECT_TRUE(after_revoke.at(1).at("revoked_at").is_number());
+  EXPECT_EQ(boss.post(revoke, json::object()).status, 404);
   const std::string third = invitation();
   storage::Database(database(), false).execute("UPDATE invitations SET expires_at = 1 WHERE used_at IS NULL");  // days later
   EXPECT_EQ(client().sign_up(request("cid", third)).status, 403);
   EXPECT_EQ(accounts(), "ann,boss");
-  expect_error(run({"admin", "revoke-invitation", "1"}), 1, "no unused invitation 1");
+  expect_error(run({"admin", "revoke-invitation", "1"}), 1, "no open invitation 1 (unknown, used or revoked)");
+  const json states = json::parse(run_ok({"admin", "invitations", "--json"}));
+  ASSERT_EQ(states.size(), 3u);
+  EXPECT_EQ(states.at(0).at("state"), "used");
+  EXPECT_EQ(states.at(1).at("state"), "revoked") << "revoked stays revoked once expired too";
+  EXPECT_EQ(states.at(2).at("state"), "expired");
 }
 
 TEST_F(sign_up, GuessingCodesLocksTheAddressOut) {
