@@ -24,10 +24,14 @@ DesignBest design_best(Home& home, const storage::User& user, const std::optiona
     throw NotFound("design " + std::to_string(best.design.id) + " has no best control software yet");
   best.configuration = *best.design.best_config;
   best.software = parse_control_software(best.configuration);
+  const std::string design_name = "design " + std::to_string(best.design.id);
+  // Said as such before the scope's refusal of a missing file ("not a file of your projects").
+  if (mission_file_deleted(best.design.mission, best.project))
+    throw NotFound(design_name + "'s mission file was deleted, so its best cannot run on it");
   try {
     best.mission = load_requested_mission(best.design.mission, scope);
   } catch (const InvalidRequest& e) {
-    throw NotFound("the mission of design " + std::to_string(best.design.id) + " cannot be loaded: " + e.what());
+    throw NotFound("the mission of " + design_name + " cannot be loaded: " + e.what());
   }
   return best;
 }

@@ -137,12 +137,16 @@ storage::Project set_mission(Home& home, const storage::User& user, const std::s
   }
 }
 
-std::optional<std::string> mission_problem(const storage::Project& project) {
+bool mission_file_deleted(const std::optional<std::string>& mission, const storage::Project& project) {
   // Only a file inside the user's own projects is looked for: whether a file elsewhere exists
   // is not for a server's user to learn (FileScope's one refusal for missing and forbidden).
-  if (!mission_file_within(project.mission, project.folder.parent_path())) return std::nullopt;
+  if (!mission_file_within(mission, project.folder.parent_path())) return false;
   std::error_code ec;
-  if (std::filesystem::exists(*project.mission, ec) || ec) return std::nullopt;
+  return !std::filesystem::exists(*mission, ec) && !ec;
+}
+
+std::optional<std::string> mission_problem(const storage::Project& project) {
+  if (!mission_file_deleted(project.mission, project)) return std::nullopt;
   return "its mission file was deleted";
 }
 

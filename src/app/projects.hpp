@@ -55,6 +55,9 @@ storage::Project set_mission(Home& home, const storage::User& user, const std::s
 /// Why the project's mission cannot be used, in the words a user reads after the project that
 /// held its mission file was deleted ("its mission file was deleted"); nullopt otherwise.
 std::optional<std::string> mission_problem(const storage::Project& project);
+/// Whether `mission` (a project's, or one of its designs') names a file of the user's own
+/// projects that no longer exists: deleted, with the project that held it or on its own.
+bool mission_file_deleted(const std::optional<std::string>& mission, const storage::Project& project);
 /// The names of the other projects of `projects` whose mission is a file inside `project`'s
 /// folder: the projects that deleting it leaves without a mission.
 std::vector<std::string> projects_using_missions_of(const storage::Project& project,

@@ -210,11 +210,18 @@ TEST_F(project_mission, DeletingAProjectNamesTheProjectsUsingItsMissionWhichThen
 
 TEST_F(project_mission, TheCliSaysWhichProjectsTakeTheirMissionFromTheProjectItDeletes) {
   run_ok({"set-mission", file_});  // "user", the active project, on holder's file
+  run_ok({"run-design", "--fsm", "--chocolate", "--seed", "1", "--threads", "2"});
   run_ok({"new-project", "spare"});
   EXPECT_EQ(run_ok({"delete-project", "spare", "--yes"}), "Deleted project spare.\n") << "none uses its files";
   EXPECT_EQ(run_ok({"delete-project", "holder", "--yes"}),
             "Deleted project holder.\nProject(s) user take their mission from it: each then needs another (set-mission).\n");
   EXPECT_NE(run_ok({"active-project"}).find("its mission file was deleted"), std::string::npos);
+  // Its design's best cannot run on the deleted file: said so, from the CLI and the page alike.
+  run_ok({"select-project", "user"});
+  const std::string line = "design 1's mission file was deleted, so its best cannot run on it";
+  expect_error(run({"test-design", "--design", "1"}), 1, line);
+  expect_error(run({"export-argos", "--design", "1", "--out", (scratch() / "argos").string()}), 1, line);
+  expect_page_refusal(ann_->post("/api/projects/user/test", {{"seeds", "1-3"}, {"design", 1}}), 404, line);
 }
 
 }  // namespace
