@@ -115,6 +115,22 @@ test('an own protocol starts, is followed, stopped, resumed and finished, with i
   assert.equal(await page.textContent('#best-score'), 'no configuration yet');
   assert.deepEqual(await page.evaluate(() => window.__sd.monitor.bestDrawing()), { nodes: 0, drawn: null });
   await shot(page, 'finished');
+  // Its designs, made, open in the monitor from the experiment's list.
+  await page.click('[data-testid="exp-designs-quick"]');
+  await page.waitForSelector('[data-testid="exp-designs-dialog"] tr[data-testid^="exp-design-row-"]');
+  const rows = await page.$$('[data-testid="exp-designs-dialog"] tr[data-testid^="exp-design-row-"]');
+  assert.equal(rows.length, 2);
+  await shot(page, 'designs-dialog');
+  const first = (await rows[0].getAttribute('data-testid')).replace('exp-design-row-', '');
+  await page.click(`[data-testid="exp-open-${first}"]`);
+  await page.waitForFunction((id) => document.querySelector('[data-testid="opened-note"]')?.textContent.startsWith(`Showing design #${id} of experiment quick.`), first);
+  await page.waitForFunction(() => /^finished/.test(document.getElementById('design-state').textContent));
+  assert.match(await page.textContent('#runs-used'), /^\d+ \/ 6000$/);
+  await page.waitForFunction(() => window.__sd.monitor.bestDrawing().nodes > 0, null, { timeout: 30000 });
+  assert.equal(await page.isDisabled('#test-run'), true, "its report assesses it, not the project's Test");
+  await shot(page, 'experiment-design-opened');
+  await page.click('[data-testid="show-latest"]');
+  await page.waitForFunction(() => !document.querySelector('[data-testid="opened-note"]'));
   // report.json downloads as the server writes it.
   const [download] = await Promise.all([page.waitForEvent('download'), page.click('[data-testid="report-json-quick"]')]);
   const report = JSON.parse(readFileSync(await download.path(), 'utf8'));
@@ -129,9 +145,10 @@ test('a second account sees none of it and cannot stop or resume it', { timeout:
   assert.match(await other.textContent('#experiment-list'), /none yet/);
   const status = await other.evaluate(async () => {
     const post = (r) => fetch(r, { method: 'POST', headers: { 'Content-Type': 'application/json', 'X-CSRF-Token': window.__sdCsrf }, body: '{}' }).then((x) => x.status);
-    return [await post('/api/projects/lab/experiments/quick/stop'), await post('/api/projects/lab/experiments/quick/resume')];
+    return [await post('/api/projects/lab/experiments/quick/stop'), await post('/api/projects/lab/experiments/quick/resume'),
+      (await fetch('/api/projects/lab/experiments/quick/designs/1')).status];
   });
-  assert.deepEqual(status, [404, 404]);
+  assert.deepEqual(status, [404, 404, 404]);
 });
 
 test('an experiment the CLI starts shows up live, and the page stops it', { timeout: 120000 }, async () => {

@@ -7,7 +7,7 @@ import { api } from './api.js';
 import { readable } from './numbers.js';
 import { el } from './properties.js';
 import { quotaRefused, refreshQuota } from './quota.js';
-import { clearError } from './toast.js';
+import { clearError, showError } from './toast.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -104,6 +104,29 @@ export function initExperiments({ project, onChanged, onFollow }) {
     onChanged();
   }
 
+  /// The designs an experiment has made (its report's), each to open in the monitor.
+  async function chooseDesign(name) {
+    const href = `/api/projects/${encodeURIComponent(project())}/experiments/${encodeURIComponent(name)}/report.json`;
+    let report;
+    try { report = await api(href, { quiet: true }); } catch (e) { showError(e.message); return; }
+    const dialog = el('dialog', { class: 'confirm-dialog', testid: 'exp-designs-dialog' });
+    const open = (id) => { dialog.close(); onFollow(name, id); };
+    const rows = report.designs.map((d) => el('tr', { testid: `exp-design-row-${d.id}` },
+      el('td', { text: `#${d.id}` }), el('td', { text: d.mission }), el('td', { text: `${d.condition} #${d.replicate}` }),
+      el('td', { text: readable(d.score) }),
+      el('td', {}, el('button', { type: 'button', class: 'small', testid: `exp-open-${d.id}`, text: 'Open', onclick: () => open(d.id) }))));
+    dialog.append(el('div', { class: 'stack' },
+      el('strong', { text: `Designs of ${name}` }),
+      el('p', { class: 'small muted', text: 'Each with its mean score on the assessment seeds; open one to see its race and best in the monitor.' }),
+      el('table', { class: 'admin-table' }, el('thead', {}, el('tr', {}, ...['', 'mission', 'condition', 'score', ''].map((h) => el('th', { text: h })))),
+        el('tbody', {}, ...rows)),
+      el('div', { class: 'row' }, el('button', { type: 'button', testid: 'exp-designs-close', text: 'Close', onclick: () => dialog.close() }))));
+    dialog.addEventListener('click', (e) => { if (e.target === dialog) dialog.close(); });
+    dialog.addEventListener('close', () => dialog.remove());
+    document.body.append(dialog);
+    dialog.showModal();
+  }
+
   /// The list, as each poll of the monitor brings it.
   function render(list) {
     // "NAME started on this server" holds while it runs; once it has ended the list says how.
@@ -124,6 +147,9 @@ export function initExperiments({ project, onChanged, onFollow }) {
       if (c && e.state !== 'finished' && c.stage === 'designing')
         buttons.push(el('button', { type: 'button', class: 'small', testid: `exp-follow-${e.name}`, text: 'Watch design',
           title: 'show the design it is making in the monitor (runs, elites, convergence, best)', onclick: () => onFollow(e.name) }));
+      if (e.designs_done > 0)
+        buttons.push(el('button', { type: 'button', class: 'small', testid: `exp-designs-${e.name}`, text: 'Designs…',
+          title: 'open one of the designs it has made in the monitor (runs, elites, convergence, best)', onclick: () => chooseDesign(e.name) }));
       if (e.state === 'interrupted' || e.state === 'failed') buttons.push(el('button', { type: 'button', class: 'small', testid: `exp-resume-${e.name}`, text: 'Resume', onclick: () => act(e.name, 'resume') }));
       return el('li', { testid: `experiment-${e.name}`, class: 'experiment-row' },
         el('span', { class: 'design-actions' },

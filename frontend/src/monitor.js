@@ -41,7 +41,9 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
   let plot = null;
   let visible = false;
   let fastUntil = 0;
-  let opened = null;  // an earlier design shown instead of the latest (its id), {experiment: name}, or null
+  // An earlier design shown instead of the latest (its id), an experiment's ({experiment: name}:
+  // the one it is making; {experiment, design: id}: that one), or null.
+  let opened = null;
   const comparing = new Set();  // ids of the designs ticked for comparison
   const graph = createGraph($('best-graph'), { readOnly: true });
   const form = initDesignForm(getCatalogue());
@@ -195,7 +197,7 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
   }
 
   const experiments = initExperiments({ project: () => selected, onChanged: () => { fastUntil = Date.now() + 10000; poll(); },
-    onFollow: (name) => openDesign({ experiment: name }) });
+    onFollow: (name, design) => openDesign(design ? { experiment: name, design } : { experiment: name }) });
   const renderExperiments = (s) => experiments.render(s.experiments || []);
 
   function renderStatus(s) {
@@ -245,7 +247,9 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
     allowMissionChange(latestState !== 'running');
     showResumable(opened === null ? design : null);
 
-    const note = opened === null ? '' : opened.experiment ? `Showing the design experiment ${opened.experiment} is making. ` : `Showing earlier design #${design.id}. `;
+    const note = opened === null ? ''
+      : opened.design ? `Showing design #${design.id} of experiment ${opened.experiment}. `
+        : opened.experiment ? `Showing the design experiment ${opened.experiment} is making. ` : `Showing earlier design #${design.id}. `;
     $('design-info').replaceChildren(...(opened === null ? [] : [el('span', { class: 'opened-note', testid: 'opened-note' },
       note, el('button', { type: 'button', class: 'link', testid: 'show-latest', text: 'show the latest', onclick: () => openDesign(null) }))]),
     document.createTextNode(`${opened && opened.experiment ? `Experiment design #${design.id}` : `Design #${design.id}`}: ${startedWith(design)}`));
@@ -333,7 +337,8 @@ export function initMonitor({ onWatch, onEdit, missions, onProjectsChanged = () 
       const base = `/api/projects/${encodeURIComponent(name)}`;
       // Without the race log (every configuration of every race): its counts are in progress.
       const url = wanted === null ? `${base}/status?race_log=false`
-        : wanted.experiment ? `${base}/experiments/${encodeURIComponent(wanted.experiment)}/current?race_log=false`
+        : wanted.design ? `${base}/experiments/${encodeURIComponent(wanted.experiment)}/designs/${wanted.design}?race_log=false`
+          : wanted.experiment ? `${base}/experiments/${encodeURIComponent(wanted.experiment)}/current?race_log=false`
           : `${base}/status?design=${wanted}&race_log=false`;
       let s;
       try {

@@ -99,31 +99,63 @@ DesignStatus design_status(Home& home, const storage::User& user, StatusDetail d
   return status;
 }
 
-DesignStatus experiment_design_status(Home& home, const storage::User& user, const std::string& project,
-                                      const std::string& experiment, StatusDetail detail) {
+namespace {
+
+/// An experiment's design as /status shows a design: a row made from its plan, its race read
+/// from its folder.
+DesignStatus experiment_design(const storage::Project& project, const storage::Experiment& experiment,
+                               const storage::ExperimentDesign& x, StatusDetail detail) {
   DesignStatus status;
-  status.project = storage::Projects(home.workspace(), user).get(project);
+  status.project = project;
+  storage::Design d;
+  d.id = x.id;
+  d.architectures = x.plan.architectures;
+  d.flavours = x.plan.flavours;
+  d.method = x.plan.method;
+  d.mission = x.plan.mission;
+  d.budget = x.plan.budget;
+  d.seed = x.plan.seed;
+  d.folder = x.folder;
+  d.best_config = x.configuration;
+  d.best_score = x.design_score;
+  // Made once it is being assessed; running while its experiment runs and it is being designed;
+  // otherwise it waits for its experiment to resume.
+  if (x.stage == storage::DesignStage::assessing || x.stage == storage::DesignStage::done)
+    d.state = storage::DesignState::finished;
+  else if (experiment.state == storage::DesignState::running && x.stage == storage::DesignStage::designing)
+    d.state = storage::DesignState::running;
+  else
+    d.state = storage::DesignState::interrupted;
+  status.design = d;
+  read_race(status, detail);
+  return status;
+}
+
+}  // namespace
+
+DesignStatus experiment_design_status(Home& home, const storage::User& user, const std::string& project,
+                                      const std::string& experiment, StatusDetail detail,
+                                      std::optional<std::int64_t> design_id) {
+  const storage::Project p = storage::Projects(home.workspace(), user).get(project);
+  if (design_id) {
+    storage::Experiments experiments(home.workspace(), p);
+    const storage::Experiment e = experiments.get(experiment);  // NotFound naming the ones it has
+    for (const storage::ExperimentDesign& x : experiments.designs(e.id)) {
+      if (x.id != *design_id) continue;
+      if (x.stage == storage::DesignStage::pending)
+        throw NotFound("design " + std::to_string(x.id) + " of experiment " + experiment + " has not started yet");
+      storage::ExperimentDesign shown = x;
+      if (x.reused_from) shown.folder = experiments.design(*x.reused_from).folder;  // its twin's race
+      return experiment_design(p, e, shown, detail);
+    }
+    throw NotFound("experiment " + experiment + " has no design " + std::to_string(*design_id));
+  }
   for (const ExperimentProgress& e : experiments_progress(home, user, project)) {
     if (e.experiment.name != experiment) continue;
     if (!e.current) throw NotFound("experiment " + experiment + " has no design under way: all are done");
-    const storage::ExperimentDesign& x = *e.current;
-    storage::Design d;
-    d.id = x.id;
-    d.architectures = x.plan.architectures;
-    d.flavours = x.plan.flavours;
-    d.mission = x.plan.mission;
-    d.budget = x.plan.budget;
-    d.seed = x.plan.seed;
-    d.folder = x.folder;
-    // It runs while its experiment does and it is being designed; otherwise it waits.
-    d.state = e.experiment.state == storage::DesignState::running && x.stage == storage::DesignStage::designing
-                  ? storage::DesignState::running
-                  : storage::DesignState::interrupted;
-    status.design = d;
-    read_race(status, detail);
-    return status;
+    return experiment_design(p, e.experiment, *e.current, detail);
   }
-  storage::Experiments(home.workspace(), status.project).get(experiment);  // NotFound naming the ones it has
+  storage::Experiments(home.workspace(), p).get(experiment);  // NotFound naming the ones it has
   throw NotFound("no experiment " + experiment);
 }
 

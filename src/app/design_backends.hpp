@@ -52,9 +52,11 @@ DesignStatus design_status(Home& home, const storage::User& user, StatusDetail d
                            const std::optional<std::string>& project = std::nullopt,
                            std::optional<std::int64_t> design_id = std::nullopt);
 
-/// The same for the design an experiment of the project is making (or stopped in): its race
-/// read from its folder; NotFound when the experiment has none under way (all done).
+/// The same for the design an experiment of the project is making (or stopped in), or for its
+/// design `design_id` (made, being made, or waiting; NotFound before it starts): its race read
+/// from its folder. NotFound when the experiment has none under way (all done) or no such design.
 DesignStatus experiment_design_status(Home& home, const storage::User& user, const std::string& project,
-                                      const std::string& experiment, StatusDetail detail);
+                                      const std::string& experiment, StatusDetail detail,
+                                      std::optional<std::int64_t> design_id = std::nullopt);
 
 }  // namespace sd::app

@@ -63,7 +63,14 @@ class EvoStick final : public DesignMethod {
     };
     const std::string document = (folder / kDocumentFile).string();
     EvolutionOutcome outcome;
-    if (std::filesystem::exists(state)) {
+    if (std::filesystem::exists(std::filesystem::symlink_status(state))) {
+      // Found by itself in the design's folder (a server resumes it): only that folder's own file,
+      // never what a link planted at its name leads to. (The CLI's `evolve --state FILE` reads
+      // the file its user names, links included.)
+      std::error_code error;
+      if (!std::filesystem::is_regular_file(std::filesystem::symlink_status(state)) ||
+          std::filesystem::hard_link_count(state, error) != 1 || error)
+        throw std::runtime_error("the EvoStick design's state file is a link or not a file; it is not read");
       outcome = resume_evolution(state.string(), run, document);
     } else {
       EvolutionRequest request;

@@ -83,6 +83,17 @@ void add_experiment_routes(Routes& routes) {
     return doc;
   });
 
+  // Any design of the experiment, made or being made, as the monitor shows a design.
+  routes.get(project + "/experiments/" + kNamePattern + "/designs/([0-9]{1,18})", [](Call& call) -> json {
+    const auto detail = status_detail(call.request);
+    const app::DesignStatus status = app::experiment_design_status(call.home, call.user, call.match(1), call.match(2),
+                                                                   detail, std::stoll(call.match(3)));
+    json doc = app::status_document(status, detail);
+    doc["running_here"] = false;  // the experiment's thread, not a design's: Stop is the experiment's
+    doc["budget"] = status.design->budget;
+    return doc;
+  });
+
   routes.post(project + "/experiments/" + kNamePattern + "/stop", [](Call& call) -> json {
     return {{"stopping", app::stop_experiment(call.home, call.user, call.match(1), call.match(2), &call.context.experiments)}};
   });

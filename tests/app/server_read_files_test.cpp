@@ -1,7 +1,8 @@
 // Files a server reads on its own, not because a user named them: a design's assessment.json,
-// design.db, pseudo-reality.json and EvoStick document. Someone who can write into a design folder (the server's own Unix user, as
-// the server makes its folders 0700) plants a symbolic or a hard link at their names, leading
-// to another account's file: the server must not serve or open what the link leads to.
+// design.db, pseudo-reality.json, and an EvoStick design's document and state file. Someone
+// who can write into a design folder (the server's own Unix user, as the server makes its
+// folders 0700) plants a symbolic or a hard link at their names, leading to another account's
+// file: the server must not serve or open what the link leads to.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <unistd.h>
@@ -139,6 +140,24 @@ TEST_F(ServerReadFiles, EveryOtherFileOfADesignFolderIsReadOnlyAsTheFolderOwnEnt
     fs::remove(mine_ / name);
     fs::remove(mine_ / "other.json");
   }
+  // An EvoStick design resumed by a server reads its state file only as its folder's own.
+  std::ofstream(theirs_ / "evolution.json") << R"({"secret": ")" << kSecret << R"("})";
+  fs::create_symlink(theirs_ / "evolution.json", mine_ / "evolution.json");
+  storage::PlannedDesign planned;
+  planned.mission = "aac";
+  planned.method = "evostick";
+  planned.budget = 1000;
+  try {
+    app::design_method("evostick").run(planned, mine_, {.threads = 1});
+    ADD_FAILURE() << "resumed from a state file linked to another account's";
+  } catch (const std::exception& e) {
+    EXPECT_EQ(std::string(e.what()), "the EvoStick design's state file is a link or not a file; it is not read");
+  }
+  fs::remove(mine_ / "evolution.json");
+  fs::create_hard_link(theirs_ / "evolution.json", mine_ / "evolution.json");
+  EXPECT_THROW(app::design_method("evostick").run(planned, mine_, {.threads = 1}), std::runtime_error);
+  fs::remove(mine_ / "evolution.json");
+
   // What the page's monitor shows of an EvoStick design goes through it: a planted link is refused.
   fs::create_symlink(theirs_ / "evostick.json", mine_ / "evostick.json");
   try {

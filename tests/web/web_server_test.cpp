@@ -901,6 +901,23 @@ TEST_F(WebServer, AnExperimentIsStartedFollowedStoppedAndResumedFromThePageByIts
   EXPECT_EQ(designs.status, 200);
   EXPECT_EQ(std::count(designs.text.begin(), designs.text.end(), '\n'), 3) << designs.text;  // a header, two designs
   EXPECT_EQ(bob_->get("/api/projects/x/experiments/quick/designs.csv").status, 404);
+  // Each design it made opens as a design does, by its id in the report.
+  const json report = alice_->get("/api/projects/x/experiments/quick/report.json").body;
+  ASSERT_EQ(report.at("designs").size(), 2u);
+  for (const json& d : report.at("designs")) {
+    const std::string route = "/api/projects/x/experiments/quick/designs/" + std::to_string(d.at("id").get<int>());
+    const Answer shown = alice_->get(route + "?race_log=false");
+    ASSERT_EQ(shown.status, 200) << shown.text;
+    EXPECT_EQ(shown.body.at("design").at("state"), "finished");
+    EXPECT_EQ(shown.body.at("design").at("best_configuration"), d.at("configuration"));
+    EXPECT_EQ(shown.body.at("design").at("seed"), d.at("seed"));
+    EXPECT_FALSE(shown.body.contains("race_log"));
+    EXPECT_FALSE(shown.body.at("convergence").empty());
+    EXPECT_EQ(bob_->get(route).status, 404);
+  }
+  const Answer unknown = alice_->get("/api/projects/x/experiments/quick/designs/99999");
+  EXPECT_EQ(unknown.status, 404);
+  EXPECT_EQ(unknown.body.at("error"), "experiment quick has no design 99999");
 }
 
 TEST_F(WebServer, OneUserRunsAtMostTwoDesignsHereAndTheThirdChangesNothing) {
