@@ -345,6 +345,14 @@ ServerSamples sample_server(const Server& server, const Load& load, Clock::time_
   return out;
 }
 
+/// The errors of every kind of request in the document, also written into it as "errors".
+long count_errors(json& doc) {
+  long errors = 0;
+  for (const auto& [name, k] : doc["kinds"].items()) errors += k["errors"].get<long>();
+  doc["errors"] = errors;
+  return errors;
+}
+
 /// Signs `name` in, reads the session and signs out, again and again, `least` to `most` seconds apart.
 void sign_in_tab(Load& load, const std::string& name, double least, double most, std::mt19937& random) {
   auto c = connect(load.port, load.options.keep_alive);
@@ -610,9 +618,7 @@ int run(const Options& o) {
   doc["rss"] = rss_verdict(rss_mib, warmup);
   doc["rss"]["warmup_s"] = o.warmup;
   doc["server_exit"] = exit;
-  long errors = 0;
-  for (const auto& [name, k] : doc["kinds"].items()) errors += k["errors"].get<long>();
-  doc["errors"] = errors;
+  const long errors = count_errors(doc);
 
   if (o.json) {
     std::cout << doc.dump(1) << "\n";
@@ -956,9 +962,7 @@ int run_lab(const Options& o) {
                   {"first_mib", rss_mib.front()}, {"last_mib", rss_mib.back()}};
   }
   doc["server_exit"] = exit;
-  long errors = 0;
-  for (const auto& [name, k] : doc["kinds"].items()) errors += k["errors"].get<long>();
-  doc["errors"] = errors;
+  const long errors = count_errors(doc);
 
   if (o.json) {
     std::cout << doc.dump(1) << "\n";

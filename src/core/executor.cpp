@@ -4,7 +4,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <exception>
 
 namespace sd {
@@ -63,7 +62,6 @@ void Executor::set_worker_niceness(int niceness) {
 }
 
 int Executor::thread_niceness() {
-  errno = 0;
   return getpriority(PRIO_PROCESS, static_cast<id_t>(gettid()));
 }
 

@@ -43,6 +43,17 @@ json launched_document(Call& call, const app::ProtocolRequest& protocol) {
   throw app::NotFound("experiment " + started.experiment.name + " vanished");
 }
 
+/// An experiment's design as /status shows a design: the one it is making, or design `id`.
+json experiment_design_answer(Call& call, std::optional<std::int64_t> id) {
+  const auto detail = status_detail(call.request);
+  const app::DesignStatus status =
+      app::experiment_design_status(call.home, call.user, call.match(1), call.match(2), detail, id);
+  json doc = app::status_document(status, detail);
+  doc["running_here"] = false;  // the experiment's thread, not a design's: Stop is the experiment's
+  doc["budget"] = status.design->budget;
+  return doc;
+}
+
 }  // namespace
 
 void add_experiment_routes(Routes& routes) {
@@ -72,27 +83,12 @@ void add_experiment_routes(Routes& routes) {
     return launched_document(call, request);
   });
 
-  // The design an experiment is making, as the monitor shows a design (`status --complete`).
-  routes.get(project + "/experiments/" + kNamePattern + "/current", [](Call& call) -> json {
-    const auto detail = status_detail(call.request);
-    const app::DesignStatus status =
-        app::experiment_design_status(call.home, call.user, call.match(1), call.match(2), detail);
-    json doc = app::status_document(status, detail);
-    doc["running_here"] = false;  // the experiment's thread, not a design's: Stop is the experiment's
-    doc["budget"] = status.design->budget;
-    return doc;
-  });
-
-  // Any design of the experiment, made or being made, as the monitor shows a design.
-  routes.get(project + "/experiments/" + kNamePattern + "/designs/([0-9]{1,18})", [](Call& call) -> json {
-    const auto detail = status_detail(call.request);
-    const app::DesignStatus status = app::experiment_design_status(call.home, call.user, call.match(1), call.match(2),
-                                                                   detail, std::stoll(call.match(3)));
-    json doc = app::status_document(status, detail);
-    doc["running_here"] = false;  // the experiment's thread, not a design's: Stop is the experiment's
-    doc["budget"] = status.design->budget;
-    return doc;
-  });
+  // The design an experiment is making (/current), or any design of it made or being made, as
+  // the monitor shows a design (`status --complete`).
+  routes.get(project + "/experiments/" + kNamePattern + "/current",
+             [](Call& call) { return experiment_design_answer(call, std::nullopt); });
+  routes.get(project + "/experiments/" + kNamePattern + "/designs/([0-9]{1,18})",
+             [](Call& call) { return experiment_design_answer(call, std::stoll(call.match(3))); });
 
   routes.post(project + "/experiments/" + kNamePattern + "/stop", [](Call& call) -> json {
     return {{"stopping", app::stop_experiment(call.home, call.user, call.match(1), call.match(2), &call.context.experiments)}};
